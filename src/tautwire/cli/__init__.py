@@ -1,0 +1,1 @@
+"""The ``tautwire`` command line (thin: every command calls library functions)."""

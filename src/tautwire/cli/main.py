@@ -1,0 +1,55 @@
+"""Entry point of the ``tautwire`` command.
+
+``main(argv) -> int`` never raises for bad input: a :class:`TautwireError`
+or a usage error becomes one clear line on stderr and a non-zero status.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Sequence
+
+import click
+
+from tautwire import __version__
+from tautwire.errors import TautwireError
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(__version__, prog_name="tautwire")
+def cli() -> None:
+    """Blind, force-based manipulation of cables with one wrist force-torque sensor."""
+
+
+def _register() -> None:
+    """Attach every command module's command to the group."""
+    from tautwire.cli import commands
+
+    for command in commands.ALL:
+        cli.add_command(command)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line with ``argv`` (default ``sys.argv[1:]``); return the exit status."""
+    _register()
+    args = list(sys.argv[1:] if argv is None else argv)
+    try:
+        result = cli.main(args=args, prog_name="tautwire", standalone_mode=False)
+    except click.exceptions.Abort:
+        click.echo("tautwire: aborted", err=True)
+        return 130
+    except click.exceptions.ClickException as exc:
+        click.echo(f"tautwire: error: {exc.format_message()}", err=True)
+        return exc.exit_code if exc.exit_code else 2
+    except TautwireError as exc:
+        click.echo(f"tautwire: error: {exc}", err=True)
+        return 1
+    except KeyboardInterrupt:
+        click.echo("tautwire: interrupted", err=True)
+        return 130
+    return int(result) if isinstance(result, int) else 0
+
+
+def entry() -> None:
+    """Console-script entry point."""
+    sys.exit(main())

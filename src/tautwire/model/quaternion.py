@@ -1,0 +1,97 @@
+"""Quaternion helpers in the project's [w, x, y, z] convention.
+
+SciPy's :class:`~scipy.spatial.transform.Rotation` is used for the algebra;
+it is called with ``scalar_first=True`` so that [w, x, y, z] is kept at every
+interface.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.spatial.transform import Rotation
+
+from tautwire.errors import InvalidArgumentError
+
+FloatArray = NDArray[np.float64]
+
+IDENTITY: FloatArray = np.array([1.0, 0.0, 0.0, 0.0])
+
+
+def as_quaternion(q: ArrayLike) -> FloatArray:
+    """Return ``q`` as a unit quaternion [w, x, y, z] with w >= 0.
+
+    Raises:
+        InvalidArgumentError: if ``q`` is not a finite, non-zero 4-vector.
+    """
+    arr = np.asarray(q, dtype=float).reshape(-1)
+    if arr.shape != (4,) or not np.all(np.isfinite(arr)):
+        raise InvalidArgumentError(f"a quaternion is 4 finite numbers [w, x, y, z], got {q!r}")
+    norm = float(np.linalg.norm(arr))
+    if norm < 1e-12:
+        raise InvalidArgumentError("a quaternion must not be zero")
+    arr = arr / norm
+    return -arr if arr[0] < 0.0 else arr
+
+
+def to_rotation(q: ArrayLike) -> Rotation:
+    """SciPy rotation of the quaternion ``q`` = [w, x, y, z]."""
+    return Rotation.from_quat(as_quaternion(q), scalar_first=True)
+
+
+def from_rotation(rotation: Rotation) -> FloatArray:
+    """Quaternion [w, x, y, z] (w >= 0) of a SciPy rotation."""
+    return as_quaternion(rotation.as_quat(scalar_first=True))
+
+
+def multiply(q1: ArrayLike, q2: ArrayLike) -> FloatArray:
+    """Hamilton product ``q1 q2`` of two [w, x, y, z] quaternions."""
+    w1, x1, y1, z1 = np.asarray(q1, dtype=float)
+    w2, x2, y2, z2 = np.asarray(q2, dtype=float)
+    return np.array(
+        [
+            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
+            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
+            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
+            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
+        ]
+    )
+
+
+def conjugate(q: ArrayLike) -> FloatArray:
+    """Conjugate (the inverse of a unit quaternion) [w, -x, -y, -z]."""
+    arr = np.asarray(q, dtype=float)
+    return np.array([arr[0], -arr[1], -arr[2], -arr[3]])
+
+
+def rotate(q: ArrayLike, v: ArrayLike) -> FloatArray:
+    """Rotate the vector ``v`` by the unit quaternion ``q``."""
+    qv = np.concatenate(([0.0], np.asarray(v, dtype=float)))
+    return multiply(multiply(q, qv), conjugate(q))[1:]
+
+
+def orientation_along(direction: ArrayLike) -> FloatArray:
+    """Orientation whose x-axis points along ``direction``, without twist.
+
+    The rotation is the smallest one that takes the world x-axis onto
+    ``direction`` (this is how the paper orients estimated feature points:
+    x along the cable, no twist).
+
+    Args:
+        direction: Vector along the cable; its length does not matter.  # (3,)
+
+    Returns:
+        Unit quaternion [w, x, y, z].  # (4,)
+    """
+    d = np.asarray(direction, dtype=float)
+    n = float(np.linalg.norm(d))
+    if n < 1e-12 or not np.isfinite(n):
+        return IDENTITY.copy()
+    d = d / n
+    x = np.array([1.0, 0.0, 0.0])
+    c = float(np.dot(x, d))
+    if c < -1.0 + 1e-12:  # opposite: half turn about z keeps "no twist" about the cable
+        return np.array([0.0, 0.0, 0.0, 1.0])
+    axis = np.cross(x, d)
+    q = np.array([1.0 + c, axis[0], axis[1], axis[2]])
+    return as_quaternion(q)

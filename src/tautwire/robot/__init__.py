@@ -1,0 +1,23 @@
+"""The narrow robot interface that primitives talk to.
+
+Both the simulated world (``tautwire.sim``) and any real-robot driver
+implement :class:`Robot`; primitives see only :class:`Observation` and send
+only :class:`Command`.
+"""
+
+from tautwire.robot.arm import ARMS, Arm, arm_index
+from tautwire.robot.command import Command, GripperCommand
+from tautwire.robot.observation import GripperState, Observation, Wrench
+from tautwire.robot.robot import Robot
+
+__all__ = [
+    "ARMS",
+    "Arm",
+    "Command",
+    "GripperCommand",
+    "GripperState",
+    "Observation",
+    "Robot",
+    "Wrench",
+    "arm_index",
+]
