@@ -17,6 +17,7 @@ them onto the whole path graph:
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Mapping
 
 import numpy as np
@@ -43,7 +44,7 @@ def constraint_matrix(arc_lengths: ArrayLike, constrained: list[int]) -> FloatAr
     s = np.asarray(arc_lengths, dtype=float).reshape(-1)
     if not constrained:
         raise InvalidArgumentError("at least one feature point must be constrained")
-    if any(b <= a for a, b in zip(constrained, constrained[1:], strict=False)):
+    if any(b <= a for a, b in itertools.pairwise(constrained)):
         raise InvalidArgumentError(f"constrained indices must increase strictly, got {constrained}")
     if constrained[0] < 0 or constrained[-1] >= s.size:
         raise InvalidArgumentError(f"constrained indices must lie in [0, {s.size - 1}]")
@@ -90,7 +91,8 @@ def map_constraints(
         P[i] = P_c[-1] + down * (s[i] - s[idx[-1]])
     if board_height is not None:
         P[:, 2] = np.maximum(P[:, 2], board_height)
-    return P
+    out: FloatArray = P
+    return out
 
 
 def update_by_constraints(

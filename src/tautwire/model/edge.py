@@ -46,7 +46,9 @@ class Edge:
         if not 0.0 < delta < 1.0:
             raise InvalidArgumentError(f"an edge splits at a fraction in (0, 1), got {delta}")
         first = Edge(self.length * delta, 0.0, self.tension, self.stiffness / delta)
-        second = Edge(self.length * (1.0 - delta), 0.0, self.tension, self.stiffness / (1.0 - delta))
+        second = Edge(
+            self.length * (1.0 - delta), 0.0, self.tension, self.stiffness / (1.0 - delta)
+        )
         return first, second
 
     def join(self, other: Edge) -> Edge:

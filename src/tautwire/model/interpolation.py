@@ -30,7 +30,8 @@ def lerp(p_a: ArrayLike, p_b: ArrayLike, delta: float) -> FloatArray:
     delta = _check_delta(delta)
     a = np.asarray(p_a, dtype=float)
     b = np.asarray(p_b, dtype=float)
-    return a + delta * (b - a)
+    out: FloatArray = a + delta * (b - a)
+    return out
 
 
 def slerp(q_a: ArrayLike, q_b: ArrayLike, delta: float) -> FloatArray:

@@ -38,10 +38,13 @@ class PathGraph:
         mass_per_length: float,
     ) -> None:
         if len(points) < 2:
-            raise InvalidArgumentError(f"a path graph needs at least 2 feature points, got {len(points)}")
+            raise InvalidArgumentError(
+                f"a path graph needs at least 2 feature points, got {len(points)}"
+            )
         if len(edges) != len(points) - 1:
             raise InvalidArgumentError(
-                f"a path graph of {len(points)} points needs {len(points) - 1} edges, got {len(edges)}"
+                f"a path graph of {len(points)} points needs {len(points) - 1} edges, "
+                f"got {len(edges)}"
             )
         if not np.isfinite(mass_per_length) or mass_per_length < 0.0:
             raise InvalidArgumentError(f"mass_per_length must be >= 0 kg/m, got {mass_per_length}")
@@ -83,7 +86,9 @@ class PathGraph:
         if d.shape != (p.shape[0] - 1,):
             raise InvalidArgumentError(f"lengths must have {p.shape[0] - 1} entries, got {d.shape}")
         total = float(np.sum(d))
-        edges = [Edge(float(di), stiffness=stiffness * total / di if di > 0 else stiffness) for di in d]
+        edges = [
+            Edge(float(di), stiffness=stiffness * total / di if di > 0 else stiffness) for di in d
+        ]
         kinds = list(kinds) if kinds is not None else ["free"] * p.shape[0]
         labels = list(labels) if labels is not None else [""] * p.shape[0]
         points = [FeaturePoint(p[i], kind=kinds[i], label=labels[i]) for i in range(p.shape[0])]
@@ -97,12 +102,12 @@ class PathGraph:
 
     @property
     def positions(self) -> FloatArray:
-        """Positions of all feature points [m].  # (N, 3)"""
+        """Positions of all feature points [m], shape (N, 3)."""
         return np.array([pt.position for pt in self.points])
 
     @property
     def lengths(self) -> FloatArray:
-        """Cable length of every edge [m].  # (N - 1,)"""
+        """Cable length of every edge [m], shape (N - 1,)."""
         return np.array([e.length for e in self.edges])
 
     @property
@@ -111,15 +116,15 @@ class PathGraph:
         return float(np.sum(self.lengths))
 
     def arc_lengths(self) -> FloatArray:
-        """Arc length [m] of each feature point from v_1.  # (N,)"""
+        """Arc length [m] of each feature point from v_1, shape (N,)."""
         return np.concatenate(([0.0], np.cumsum(self.lengths)))
 
     def masses(self) -> FloatArray:
-        """m_i [kg] of every feature point (eq:mass).  # (N,)"""
+        """m_i [kg] of every feature point (eq:mass), shape (N,)."""
         return point_masses(self.lengths, self.mass_per_length)
 
     def sags(self) -> FloatArray:
-        """s_i [m] of every edge (equ:catenarySlack) at the current positions.  # (N - 1,)"""
+        """s_i [m] of every edge (equ:catenarySlack) at the current positions, shape (N - 1,)."""
         p = self.positions
         return np.array([sag(p[i], p[i + 1], e.length) for i, e in enumerate(self.edges)])
 
@@ -150,17 +155,22 @@ class PathGraph:
             e.sag = float(s)
 
     def set_positions(self, positions: ArrayLike) -> None:
-        """Set every point's position [m] and refresh masses and sags.  # (N, 3)"""
+        """Set every point's position [m] and refresh masses and sags, shape (N, 3)."""
         p = np.asarray(positions, dtype=float)
         if p.shape != (len(self.points), 3) or not np.all(np.isfinite(p)):
-            raise InvalidArgumentError(f"positions must be finite with shape ({len(self.points)}, 3)")
+            raise InvalidArgumentError(
+                f"positions must be finite with shape ({len(self.points)}, 3)"
+            )
         for pt, pi in zip(self.points, p, strict=True):
             pt.position = pi.copy()
         self.refresh()
 
     def orient_along_edges(self, keep: Sequence[FeatureKind] = ("gripper",)) -> None:
-        """Orient points with x along the cable, no twist (the paper's rule for
-        estimated points); points of a kind in ``keep`` keep their orientation."""
+        """Orient points with x along the cable, without twist.
+
+        This is the paper's rule for estimated points; points of a kind in
+        ``keep`` keep their orientation.
+        """
         from tautwire.model.quaternion import orientation_along
 
         p = self.positions
@@ -191,7 +201,9 @@ class PathGraph:
                 f"edge_index must be in [0, {len(self.edges) - 1}], got {edge_index}"
             )
         if not 0.0 < delta < 1.0:
-            raise InvalidArgumentError(f"a new point lies strictly inside its edge: delta in (0, 1), got {delta}")
+            raise InvalidArgumentError(
+                f"a new point lies strictly inside its edge: delta in (0, 1), got {delta}"
+            )
         before, after = self.points[edge_index], self.points[edge_index + 1]
         point = FeaturePoint(
             lerp(before.position, after.position, delta),
@@ -205,7 +217,9 @@ class PathGraph:
         self.refresh()
         return edge_index + 1
 
-    def insert_at_arc_length(self, arc_length: float, kind: FeatureKind = "goal", label: str = "") -> int:
+    def insert_at_arc_length(
+        self, arc_length: float, kind: FeatureKind = "goal", label: str = ""
+    ) -> int:
         """Insert a point at ``arc_length`` [m] from v_1, or return the point already there."""
         i, delta = self.locate(arc_length)
         tol = 1e-9
@@ -232,5 +246,7 @@ class PathGraph:
         return PathGraph([pt.copy() for pt in self.points], edges, self.mass_per_length)
 
     def __repr__(self) -> str:
-        kinds = ", ".join(f"{pt.kind}{'(' + pt.label + ')' if pt.label else ''}" for pt in self.points)
+        kinds = ", ".join(
+            f"{pt.kind}{'(' + pt.label + ')' if pt.label else ''}" for pt in self.points
+        )
         return f"PathGraph({len(self.points)} points: {kinds}; L={self.total_length:.4g} m)"

@@ -22,11 +22,17 @@ MIN_SPAN = 1e-9
 
 
 def sag_from_span(a: float, h: float, d: float) -> float:
-    """Sag [m] from the horizontal span ``a`` [m], height difference ``h`` [m]
-    and cable length ``d`` [m] of an edge.
+    """Sag [m] of an edge from its span, height difference and cable length.
 
-    Returns 0 for a = 0 (a freely hanging end, where the formula is undefined)
-    and for a taut edge (d no longer than the chord); never NaN.
+    Args:
+        a: Horizontal span [m].
+        h: Height difference [m].
+        d: Cable length of the edge [m].
+
+    Returns:
+        The sag [m]; 0 for a = 0 (a freely hanging end, where the formula
+        is undefined) and for a taut edge (d no longer than the chord);
+        never NaN.
     """
     a = abs(float(a))
     h = float(h)

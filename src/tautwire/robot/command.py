@@ -35,7 +35,9 @@ class GripperCommand:
                 f"gripper mode must be 'hold', 'open' or 'grip_force', got {self.mode!r}"
             )
         if not np.isfinite(self.grip_force) or self.grip_force < 0.0:
-            raise InvalidArgumentError(f"grip_force must be finite and >= 0 N, got {self.grip_force}")
+            raise InvalidArgumentError(
+                f"grip_force must be finite and >= 0 N, got {self.grip_force}"
+            )
 
 
 def _zero_twist() -> FloatArray:

@@ -1,0 +1,42 @@
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.model.quaternion import (
+    as_quaternion,
+    conjugate,
+    multiply,
+    orientation_along,
+    rotate,
+    to_rotation,
+)
+
+vectors = st.lists(st.floats(-1, 1), min_size=3, max_size=3).filter(
+    lambda v: np.linalg.norm(v) > 1e-3
+)
+
+
+@settings(max_examples=100, deadline=None)
+@given(vectors)
+def test_orientation_along_points_x_along_the_direction(v: list[float]) -> None:
+    q = orientation_along(v)
+    x_axis = rotate(q, [1.0, 0.0, 0.0])
+    assert x_axis == pytest.approx(np.asarray(v) / np.linalg.norm(v), abs=1e-9)
+
+
+def test_multiply_matches_scipy() -> None:
+    rng = np.random.default_rng(0)
+    a, b = as_quaternion(rng.normal(size=4)), as_quaternion(rng.normal(size=4))
+    expected = (to_rotation(a) * to_rotation(b)).as_quat(scalar_first=True)
+    product = multiply(a, b)
+    assert abs(abs(np.dot(product, expected)) - 1.0) < 1e-12
+    assert multiply(a, conjugate(a)) == pytest.approx([1, 0, 0, 0])
+
+
+def test_rejects_bad_quaternions() -> None:
+    with pytest.raises(InvalidArgumentError):
+        as_quaternion([0, 0, 0, 0])
+    with pytest.raises(InvalidArgumentError):
+        as_quaternion([1, 0, 0])
