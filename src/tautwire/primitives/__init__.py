@@ -1,0 +1,1 @@
+"""Manipulation primitives A-I: small state machines from Observation to Command."""
