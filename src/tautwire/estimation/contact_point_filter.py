@@ -1,0 +1,350 @@
+"""Kalman filter of a contact point (equ:kalmanUpdate) with change detection.
+
+The state x is the static contact position p_c [m] (F = I); each sample gives
+the 2-D measurement z = H p_g of :mod:`tautwire.estimation.contact_observation`
+(the normalised form of equ:ls_observation_model) with noise R = r^2 I_2,
+r = d sigma_f / |f|, where d is the distance from the gripper to the current
+estimate (or a known ``edge_length``), floored at ``min_distance``. The
+covariance P is the paper's "uncertainty"; ``std = sqrt(diag(P))``.
+
+Initialisation: samples are buffered until their force directions span
+``init_spread`` [rad]; then a batch least squares over the buffer
+(:func:`~tautwire.estimation.contact_point_least_squares`) gives x and P.
+Before that there is no estimate (``None``). A Kalman filter with Q = 0
+started this way gives exactly the batch least-squares answer over all
+samples (tested).
+
+Change detection: see :mod:`tautwire.estimation.contact_change_detector`.
+On a declared change the filter restarts with a batch least squares over the
+gated run with a weak prior on the current line (centred at the point of the
+line nearest the old estimate, isotropic std equal to its distance from the
+gripper); the sample reports ``changed=True`` and its index is appended to
+:attr:`ContactPointFilter.changes`.
+
+Process noise: Q = q I per step. The paper tuned q = 1e-7 m^2 by hand to trade
+precision for responsiveness after a contact change. Change detection now
+provides the responsiveness, so q only has to absorb a slowly moving contact
+(a cable rolling around a round peg moves its tangent point by about
+r_peg * dtheta per sample). The default 1e-8 m^2 (0.1 mm per step) is chosen
+from measurements on synthetic circles (tests/estimation/test_contact_point_filter.py
+and the report): for a point contact it costs little against q = 0 and
+keeps the estimate and its std consistent for a 5 mm peg.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.contact_change_detector import ContactChangeDetector
+from tautwire.estimation.contact_observation import MIN_DISTANCE
+from tautwire.estimation.contact_point_least_squares import (
+    ContactPointLeastSquares,
+    contact_point_least_squares,
+)
+from tautwire.estimation.weight_compensation import compensate_weight
+from tautwire.model.tension import G as GRAVITY_ABS
+
+FloatArray = NDArray[np.float64]
+
+#: Default process noise q [m^2 per step, per axis] (see the module docstring).
+DEFAULT_PROCESS_NOISE = 1e-9
+#: Default angular spread [rad] of the first samples before the first estimate.
+DEFAULT_INIT_SPREAD = math.radians(10.0)
+
+
+class ContactPointUpdate(NamedTuple):
+    """Result of :meth:`ContactPointFilter.update`.
+
+    Attributes:
+        estimate: Contact position [m], or None before the first estimate.  # (3,)
+        covariance: Its covariance P [m^2], or None.  # (3, 3)
+        std: sqrt(diag(P)) [m], or None.  # (3,)
+        changed: A new contact was declared at this sample.
+        nis: Normalised innovation squared of this sample (None when the
+            filter was not yet running or the sample was not used).
+        used: The sample was fused into the estimate (False for slack
+            cable, gated samples, or buffered samples before the first estimate).
+    """
+
+    estimate: FloatArray | None
+    covariance: FloatArray | None
+    std: FloatArray | None
+    changed: bool
+    nis: float | None
+    used: bool
+
+
+class ContactPointFilter:
+    """Kalman filter of one contact point from gripper positions and forces.
+
+    Args:
+        force_noise: sigma_f [N], force sensor noise, std per axis.
+        process_noise: q [m^2 per step], per axis (a scalar or 3 values).
+        position_noise: sigma_p [m], gripper position noise, std per axis.
+        mass_per_length: rho [kg/m] for weight compensation (0 = off).
+        edge_length: Known gripper-contact cable length [m] for R and the
+            weight compensation; None uses the distance to the estimate.
+        min_distance: Floor [m] of the distance in R.
+        min_tension: Samples with |f| below this [N] (slack cable) are skipped.
+        init_spread: Angular spread [rad] of the buffered force directions
+            that triggers the first estimate.
+        init_max_samples: Most samples kept in the buffer before the first
+            estimate (oldest dropped).
+        detector: Contact change detector; None for the default one.
+        detect_changes: False disables change detection (no gating).
+        x0: Optional prior mean [m]: start running at once from (x0, P0).  # (3,)
+        P0: Prior covariance [m^2] with ``x0``.  # (3, 3)
+    """
+
+    def __init__(
+        self,
+        force_noise: float = 0.05,
+        process_noise: float | ArrayLike = DEFAULT_PROCESS_NOISE,
+        position_noise: float = 0.0,
+        mass_per_length: float = 0.0,
+        edge_length: float | None = None,
+        min_distance: float = MIN_DISTANCE,
+        min_tension: float = 0.1,
+        init_spread: float = DEFAULT_INIT_SPREAD,
+        init_max_samples: int = 250,
+        detector: ContactChangeDetector | None = None,
+        detect_changes: bool = True,
+        x0: ArrayLike | None = None,
+        P0: ArrayLike | None = None,
+    ) -> None:
+        if not (force_noise > 0.0 and math.isfinite(force_noise)):
+            raise InvalidArgumentError(f"force_noise must be > 0 N, got {force_noise}")
+        q = np.broadcast_to(np.asarray(process_noise, dtype=float), (3,)).copy()
+        if np.any(q < 0.0) or not np.all(np.isfinite(q)):
+            raise InvalidArgumentError(f"process_noise must be >= 0 m^2 per step, got {q}")
+        if position_noise < 0.0 or not math.isfinite(position_noise):
+            raise InvalidArgumentError(f"position_noise must be >= 0 m, got {position_noise}")
+        if mass_per_length < 0.0 or not math.isfinite(mass_per_length):
+            raise InvalidArgumentError(f"mass_per_length must be >= 0 kg/m, got {mass_per_length}")
+        if edge_length is not None and not (edge_length > 0.0 and math.isfinite(edge_length)):
+            raise InvalidArgumentError(f"edge_length must be > 0 m or None, got {edge_length}")
+        if not (min_distance > 0.0 and math.isfinite(min_distance)):
+            raise InvalidArgumentError(f"min_distance must be > 0 m, got {min_distance}")
+        if min_tension < 0.0 or not math.isfinite(min_tension):
+            raise InvalidArgumentError(f"min_tension must be >= 0 N, got {min_tension}")
+        if not 0.0 < init_spread < math.pi:
+            raise InvalidArgumentError(f"init_spread must be in (0, pi) rad, got {init_spread}")
+        if init_max_samples < 3:
+            raise InvalidArgumentError(f"init_max_samples must be >= 3, got {init_max_samples}")
+        if (x0 is None) != (P0 is None):
+            raise InvalidArgumentError("give both x0 and P0, or neither")
+        self.force_noise = float(force_noise)
+        self.Q: FloatArray = np.diag(q)  # (3, 3)
+        self.position_noise = float(position_noise)
+        self.mass_per_length = float(mass_per_length)
+        self.edge_length = edge_length
+        self.min_distance = float(min_distance)
+        self.min_tension = float(min_tension)
+        self.init_spread = float(init_spread)
+        self.detector = detector if detector is not None else ContactChangeDetector()
+        self.detect_changes = bool(detect_changes)
+        self.x: FloatArray = np.zeros(3)  # (3,)
+        self.P: FloatArray = np.zeros((3, 3))  # (3, 3)
+        self.running = False
+        self.changes: list[int] = []
+        self._count = 0
+        self._buffer: deque[tuple[FloatArray, FloatArray]] = deque(maxlen=init_max_samples)
+        self._recent: deque[tuple[int, FloatArray, FloatArray]] = deque(maxlen=self.detector.window)
+        if x0 is not None and P0 is not None:
+            self.x = np.asarray(x0, dtype=float).reshape(3).copy()
+            self.P = np.asarray(P0, dtype=float).reshape(3, 3).copy()
+            self.running = True
+
+    # ------------------------------------------------------------------ queries
+    @property
+    def estimate(self) -> FloatArray | None:
+        """Current contact estimate [m], shape (3,), or None before the first one."""
+        return self.x.copy() if self.running else None
+
+    @property
+    def std(self) -> FloatArray | None:
+        """sqrt(diag(P)) [m], shape (3,), or None before the first estimate."""
+        return np.sqrt(np.diag(self.P)) if self.running else None
+
+    @property
+    def sample_count(self) -> int:
+        """Number of samples given to :meth:`update` so far."""
+        return self._count
+
+    # --------------------------------------------------------------- internals
+    def _span(self, p: FloatArray) -> float:
+        if self.edge_length is not None:
+            return self.edge_length
+        return float(np.linalg.norm(p - self.x)) if self.running else 0.0
+
+    def _result(self, changed: bool, nis: float | None, used: bool) -> ContactPointUpdate:
+        if not self.running:
+            return ContactPointUpdate(None, None, None, changed, nis, used)
+        P = self.P.copy()
+        return ContactPointUpdate(self.x.copy(), P, np.sqrt(np.diag(P)), changed, nis, used)
+
+    def batch(
+        self,
+        p_grippers: FloatArray,
+        f_sens: FloatArray,
+        prior_mean: FloatArray | None = None,
+        prior_covariance: FloatArray | None = None,
+    ) -> ContactPointLeastSquares:
+        """Batch least squares with this filter's noise and weight model.
+
+        With weight compensation on, the span lengths come from a first,
+        uncompensated solve (or ``edge_length``) and two refinements.
+
+        Args:
+            p_grippers: Gripper positions [m].  # (N, 3)
+            f_sens: Raw forces [N] on the gripper.  # (N, 3)
+            prior_mean: Optional prior mean [m].  # (3,)
+            prior_covariance: Its covariance [m^2].  # (3, 3)
+
+        Returns:
+            The least-squares result.
+        """
+        kwargs = dict(
+            force_noise=self.force_noise,
+            prior_mean=prior_mean,
+            prior_covariance=prior_covariance,
+            position_noise=self.position_noise,
+            min_distance=self.min_distance,
+        )
+        res = contact_point_least_squares(
+            p_grippers,
+            f_sens,
+            distances=self.edge_length,
+            **kwargs,  # type: ignore[arg-type]
+        )
+        if self.mass_per_length > 0.0:
+            for _ in range(2):
+                if self.edge_length is not None:
+                    spans = np.full(p_grippers.shape[0], self.edge_length)
+                else:
+                    spans = np.linalg.norm(p_grippers - res.estimate, axis=1)
+                f_comp = np.array(
+                    [
+                        compensate_weight(f, s, self.mass_per_length)
+                        for f, s in zip(f_sens, spans, strict=True)
+                    ]
+                )
+                res = contact_point_least_squares(
+                    p_grippers,
+                    f_comp,
+                    distances=spans,
+                    **kwargs,  # type: ignore[arg-type]
+                )
+        return res
+
+    def _try_initialise(self) -> bool:
+        if len(self._buffer) < 3:
+            return False
+        u = np.array([f / np.linalg.norm(f) for _, f in self._buffer])  # (N, 3)
+        lam = float(np.linalg.eigvalsh(np.eye(3) - (u.T @ u) / u.shape[0])[0])
+        spread = 2.0 * math.asin(math.sqrt(min(max(lam, 0.0), 1.0)))
+        if spread < self.init_spread:
+            return False
+        p = np.array([s[0] for s in self._buffer])
+        f = np.array([s[1] for s in self._buffer])
+        res = self.batch(p, f)
+        self.x = res.estimate.copy()
+        self.P = res.covariance.copy()
+        self.running = True
+        self._buffer.clear()
+        return True
+
+    def _restart(self, first_gated: int, p: FloatArray, f_chord: FloatArray) -> None:
+        samples = [(pp, ff) for (i, pp, ff) in self._recent if i >= first_gated]
+        u = f_chord / np.linalg.norm(f_chord)
+        along = max(float(u @ (self.x - p)), 0.0)
+        prior_mean = p + along * u
+        sigma = max(along, self.min_distance)
+        prior_cov = sigma * sigma * np.eye(3)
+        ps = np.array([s[0] for s in samples])
+        fs = np.array([s[1] for s in samples])
+        res = self.batch(ps, fs, prior_mean, prior_cov)
+        self.x = res.estimate.copy()
+        self.P = res.covariance.copy()
+        self._recent.clear()
+
+    # ------------------------------------------------------------------ update
+    def update(self, p_gripper: ArrayLike, f_sens: ArrayLike) -> ContactPointUpdate:
+        """Fuse one sample (equ:kalmanUpdate).
+
+        Args:
+            p_gripper: Gripper position p_g [m], world frame.  # (3,)
+            f_sens: Force [N] the cable exerts on the gripper, world frame,
+                bias removed (raw: weight compensation happens here when
+                ``mass_per_length`` > 0).  # (3,)
+
+        Returns:
+            The estimate (or None), its covariance and std, the change flag,
+            the NIS and whether the sample was used.
+        """
+        index = self._count
+        self._count += 1
+        p = np.array(p_gripper, dtype=float).reshape(3)
+        f_raw = np.array(f_sens, dtype=float).reshape(3)
+        fx, fy, fz = f_raw.tolist()
+        if self.mass_per_length > 0.0 and self.running:
+            # f = f_sens - m_g g with m_g = rho d / 2 (eq:mass, equ:edge_tension)
+            fz += 0.5 * self.mass_per_length * self._span(p) * GRAVITY_ABS
+        fn = math.sqrt(fx * fx + fy * fy + fz * fz)
+        if not self.running:
+            if fn >= self.min_tension and math.isfinite(fn):
+                self._buffer.append((p, f_raw))
+                self._try_initialise()
+            return self._result(False, None, False)
+        if fn < self.min_tension or not math.isfinite(fn):
+            self.P += self.Q  # P = F P F' + Q (time passes, nothing measured)
+            return self._result(False, None, False)
+
+        # observation model (equ:ls_observation_model), normalised, see contact_observation
+        x_, y_, z_ = fx / fn, fy / fn, fz / fn
+        sign = 1.0 if z_ >= 0.0 else -1.0
+        a = -1.0 / (sign + z_)
+        b = x_ * y_ * a
+        H = np.array(
+            [[1.0 + sign * x_ * x_ * a, sign * b, -sign * x_], [b, sign + y_ * y_ * a, -y_]]
+        )
+        d = max(self._span(p), self.min_distance)
+        r = d * self.force_noise / fn
+        r2 = r * r + self.position_noise * self.position_noise  # R = r^2 I
+
+        P = self.P + self.Q  # P = F P F' + Q  (F = I: x = F x is x)
+        y = H @ (p - self.x)  # y = z - H x,  z = H p_g
+        PHt = P @ H.T  # (3, 2)
+        S = H @ PHt  # S = H P H' + R  (R added on the diagonal below)
+        s00 = float(S[0, 0]) + r2
+        s01 = float(S[0, 1])
+        s11 = float(S[1, 1]) + r2
+        det = s00 * s11 - s01 * s01
+        y0, y1 = float(y[0]), float(y[1])
+        nis = (s11 * y0 * y0 - 2.0 * s01 * y0 * y1 + s00 * y1 * y1) / det  # NIS = y' S^-1 y
+
+        if self.detect_changes:
+            test = self.detector.test(index, nis, math.hypot(y0, y1))
+            if test.gated:
+                self.P = P
+                self._recent.append((index, p, f_raw))
+                if test.changed and test.first_gated is not None:
+                    f_chord = np.array([fx, fy, fz])
+                    self._restart(test.first_gated, p, f_chord)
+                    self.changes.append(index)
+                    return self._result(True, nis, True)
+                return self._result(False, nis, False)
+            self._recent.clear()
+
+        SI = np.array([[s11, -s01], [-s01, s00]]) / det  # S^-1
+        K = PHt @ SI  # K = P H' S^-1
+        self.x = self.x + K @ y  # x = x + K y
+        I_KH = np.eye(3) - K @ H
+        self.P = I_KH @ P @ I_KH.T + r2 * (K @ K.T)  # P = (I - K H) P (I - K H)' + K R K'
+        return self._result(False, nis, True)
