@@ -10,9 +10,25 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, field_validator
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    field_validator,
+    model_validator,
+)
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.scenario.geometry import check_geometry
+from tautwire.scenario.issue import located_error
+from tautwire.scenario.primitive_catalogue import (
+    ParameterError,
+    PrimitiveSpec,
+    find_primitive,
+    primitive_choices,
+)
+from tautwire.scenario.references import check_references
 
 
 def _sequence_to_tuple(value: Any) -> Any:
@@ -226,6 +242,57 @@ class TaskStep(_Model):
     letter: str
     params: dict[str, float | str | list[float]] = {}
 
+    @model_validator(mode="before")
+    @classmethod
+    def _from_file(cls, data: Any) -> Any:
+        """Resolve the primitive and check its parameters against the catalogue."""
+        if not isinstance(data, dict):
+            return data
+        if "primitive" not in data:
+            raise located_error(
+                f"missing (expected a primitive name or letter: {primitive_choices()})",
+                ("primitive",),
+            )
+        key = data["primitive"]
+        if not isinstance(key, str):
+            raise located_error(
+                f"got {key!r} (expected a primitive name or letter: {primitive_choices()})",
+                ("primitive",),
+            )
+        try:
+            spec = find_primitive(key)
+        except InvalidArgumentError as exc:
+            raise located_error(str(exc), ("primitive",)) from exc
+        canonical = "params" in data or "letter" in data
+        if canonical:
+            extra = sorted(set(data) - {"primitive", "letter", "params"})
+            if extra:
+                raise located_error("unknown key (expected primitive, letter, params)", (extra[0],))
+            letter = data.get("letter", spec.letter)
+            if letter != spec.letter:
+                raise located_error(
+                    f"got {letter!r} (expected {spec.letter!r}, the letter of {spec.name})",
+                    ("letter",),
+                )
+            values = data.get("params", {})
+            if not isinstance(values, dict):
+                raise located_error(
+                    f"got {values!r} (expected a mapping of parameters)", ("params",)
+                )
+        else:
+            values = {k: v for k, v in data.items() if k != "primitive"}
+        try:
+            params = spec.check_params(values)
+        except ParameterError as exc:
+            where = ("params", exc.parameter) if canonical else (exc.parameter,)
+            raise located_error(str(exc), where) from exc
+        return {"primitive": spec.name, "letter": spec.letter, "params": params}
+
+    @property
+    def spec(self) -> PrimitiveSpec:
+        """The catalogue entry of this step's primitive."""
+        return find_primitive(self.primitive)
+
 
 class SimSettings(_Model):
     """Optional simulation resolution; ``None`` leaves the simulator's default.
@@ -261,6 +328,16 @@ class Scenario(_Model):
     cables: list[CableSpec]
     task: list[TaskStep]
     sim: SimSettings = SimSettings()
+
+    @model_validator(mode="after")
+    def _consistent(self) -> Scenario:
+        """Check names, references and geometry; raise the first issue found."""
+        issues = check_references(self)
+        if not issues:
+            issues = check_geometry(self)
+        if issues:
+            raise located_error(issues[0].message, issues[0].location)
+        return self
 
     def fixture(self, name: str) -> Anchor | Peg | Clip:
         """Return the fixture called ``name`` (see :meth:`Board.fixture`)."""
