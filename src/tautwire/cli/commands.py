@@ -4,4 +4,6 @@ from __future__ import annotations
 
 import click
 
-ALL: list[click.Command] = []
+from tautwire.cli.validate import validate
+
+ALL: list[click.Command] = [validate]

@@ -1,0 +1,60 @@
+"""``tautwire validate SCENARIO``: check a scenario file and say what is wrong."""
+
+from __future__ import annotations
+
+import click
+
+from tautwire.scenario import Scenario, load_scenario
+
+
+def summarise(scenario: Scenario) -> list[str]:
+    """A few lines saying what a valid scenario holds.
+
+    Args:
+        scenario: a validated scenario.
+
+    Returns:
+        Lines of text: name, fixtures, cables with their routes, task steps.
+    """
+    fixtures = scenario.board.fixtures
+    lines = [
+        f"scenario {scenario.name!r} (version {scenario.version}, seed {scenario.seed}): valid",
+        f"fixtures: {len(fixtures)}"
+        + (": " + ", ".join(f"{f.name} ({f.type})" for f in fixtures) if fixtures else ""),
+        f"cables: {len(scenario.cables)}",
+    ]
+    for cable in scenario.cables:
+        route = [cable.start or "free end", *cable.via]
+        holds = ", ".join(f"{h.arm} at {h.at:g} m" for h in cable.held_by)
+        lines.append(
+            f"  {cable.name}: {cable.length:g} m, {cable.stiffness:g} N/m, "
+            f"route {' -> '.join(route)}, held by {holds}"
+        )
+    lines.append(f"task steps: {len(scenario.task)}")
+    for n, step in enumerate(scenario.task, start=1):
+        params = ", ".join(f"{k}={_value(v)}" for k, v in step.params.items())
+        lines.append(f"  {n}. {step.letter} {step.primitive}({params})")
+    return lines
+
+
+def _value(value: float | str | list[float]) -> str:
+    """A parameter value, compactly."""
+    if isinstance(value, list):
+        return "[" + ", ".join(f"{c:g}" for c in value) + "]"
+    if isinstance(value, float):
+        return f"{value:g}"
+    return value
+
+
+@click.command("validate")
+@click.argument("scenario", type=click.Path(dir_okay=False, path_type=str))
+def validate(scenario: str) -> int:
+    """Check the scenario file SCENARIO; print a summary if it is valid.
+
+    On the first problem found, print one line FILE:LINE: FIELD: what is
+    wrong (what is expected) on stderr and exit with status 1.
+    """
+    loaded = load_scenario(scenario)
+    for line in summarise(loaded):
+        click.echo(line)
+    return 0
