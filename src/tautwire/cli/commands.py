@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import click
 
+from tautwire.cli.estimate import estimate
 from tautwire.cli.validate import validate
 
-ALL: list[click.Command] = [validate]
+ALL: list[click.Command] = [validate, estimate]

@@ -208,13 +208,13 @@ def write_force_log(
         if a.shape != (n, width):
             raise InvalidArgumentError(f"{label} must have shape ({n}, {width}), got {a.shape}")
         blocks.append(a)
-    for arr, group, label in (
+    for opt, group, label in (
         (q_gripper, OPTIONAL_GROUPS[0], "q_gripper"),
         (torque, OPTIONAL_GROUPS[1], "torque"),
     ):
-        if arr is None:
+        if opt is None:
             continue
-        a = np.asarray(arr, dtype=float)
+        a = np.asarray(opt, dtype=float)
         if a.shape != (n, len(group)):
             raise InvalidArgumentError(
                 f"{label} must have shape ({n}, {len(group)}), got {a.shape}"

@@ -98,7 +98,7 @@ def estimate_force_log(
         history.append(HistoryEntry(float(t), r.estimate, r.std))
     window = flt.detector.window
     starts = [0] + [max(c - window + 1, 0) for c in flt.changes]
-    ends = starts[1:] + [len(log)]
+    ends = [*starts[1:], len(log)]
     stiffness: float | None = None
     stiffness_std: float | None = None
     for start, end in zip(starts, ends, strict=True):
