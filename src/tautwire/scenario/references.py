@@ -40,7 +40,9 @@ def check_references(scenario: Scenario) -> list[Issue]:
     for i, cable in enumerate(scenario.cables):
         here = ("cables", i)
         if cable.start is not None and cable.start not in anchors:
-            what = f"is a {fixtures[cable.start].type}" if cable.start in fixtures else "is unknown"
+            what = (
+                f"is {_a(fixtures[cable.start].type)}" if cable.start in fixtures else "is unknown"
+            )
             issues.append(
                 Issue(
                     (*here, "start"),
@@ -49,7 +51,7 @@ def check_references(scenario: Scenario) -> list[Issue]:
             )
         for j, name in enumerate(cable.via):
             if name not in routable:
-                what = f"is an {fixtures[name].type}" if name in fixtures else "is unknown"
+                what = f"is {_a(fixtures[name].type)}" if name in fixtures else "is unknown"
                 issues.append(
                     Issue(
                         (*here, "via", j),
@@ -104,7 +106,7 @@ def _task_references(scenario: Scenario) -> list[Issue]:
                 continue
             loc = ("task", i, param.name)
             if param.kind == "clip" and value not in clips:
-                what = f"is a {fixtures[value].type}" if value in fixtures else "is unknown"
+                what = f"is {_a(fixtures[value].type)}" if value in fixtures else "is unknown"
                 issues.append(Issue(loc, f"{value!r} {what} (expected a clip: {_list(clips)})"))
             if param.kind == "fixture" and value not in fixtures:
                 issues.append(
@@ -136,6 +138,11 @@ def _duplicates(names: list[str], where: tuple[str, ...], what: str) -> list[Iss
             )
         seen.add(name)
     return issues
+
+
+def _a(word: str) -> str:
+    """``word`` with its indefinite article: ``an anchor``, ``a peg``."""
+    return f"an {word}" if word[:1] in "aeiou" else f"a {word}"
 
 
 def _list(names: Iterable[str]) -> str:
