@@ -43,7 +43,7 @@ def test_normal_equations_are_the_papers_unnormalised_g_scaled_by_the_noise():
 def test_parallel_forces_raise_a_clear_error_not_nan():
     p = np.array([[0.0, 0.0, 0.0], [0.1, 0.0, 0.0], [0.3, 0.0, 0.0]])
     f = np.array([[1.0, 0.0, 0.0]] * 3)
-    with pytest.raises(InvalidArgumentError, match="parallel.*rank 2 of 3"):
+    with pytest.raises(InvalidArgumentError, match=r"parallel.*rank 2 of 3"):
         contact_point_least_squares(p, f)
     # with a prior the line is resolved and nothing is NaN
     res = contact_point_least_squares(
@@ -55,7 +55,7 @@ def test_parallel_forces_raise_a_clear_error_not_nan():
 
 
 def test_two_samples_spread_is_their_angle():
-    p = np.zeros((2, 3)) + [[0.0, -1.0, 0.0], [-1.0, 0.0, 0.0]]
+    p = np.array([[0.0, -1.0, 0.0], [-1.0, 0.0, 0.0]])
     f = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0]])
     res = contact_point_least_squares(p, f)
     assert res.spread == pytest.approx(np.pi / 2)
