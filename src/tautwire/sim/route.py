@@ -1,0 +1,216 @@
+"""The cable's initial shape: a taut route through its fixtures.
+
+The route runs from the start anchor through the ``via`` fixtures to the
+held points. It wraps each peg on the side that a taut route bends around
+(tangent lines and an arc at radius peg radius + cable radius), and passes a
+clip along its slot at the seat. The vertices are spread along the route by
+arc length between the points whose arc length is known (anchor 0, held
+points); a route shorter than the cable leaves slack that the settle phase
+lets sag, a longer one stretches the cable.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import SimulationError
+from tautwire.model.quaternion import rotate
+from tautwire.sim.discretization import CableDiscretization
+from tautwire.sim.spec import CableSpec, ClipSpec, PegSpec, WorldSpec
+
+FloatArray = NDArray[np.float64]
+
+_ARC_STEP = np.deg2rad(10.0)
+
+
+def _horizontal(v: FloatArray) -> FloatArray:
+    return np.array([v[0], v[1], 0.0])
+
+
+def _unit(v: FloatArray) -> FloatArray:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 1e-12 else np.zeros_like(v)
+
+
+def _tangent_point(
+    point: FloatArray, centre: FloatArray, radius: float, side: FloatArray
+) -> FloatArray:
+    """Horizontal tangent point on the circle (centre, radius) seen from ``point``."""
+    rel = _horizontal(point - centre)
+    dist = float(np.linalg.norm(rel))
+    if dist <= radius * (1.0 + 1e-9):
+        return centre + radius * _unit(side)
+    beta = np.arccos(radius / dist)
+    u = rel / dist
+    best = centre + radius * _unit(side)
+    best_dot = -np.inf
+    for sign in (1.0, -1.0):
+        c, s = np.cos(sign * beta), np.sin(sign * beta)
+        cand = np.array([c * u[0] - s * u[1], s * u[0] + c * u[1], 0.0])
+        d = float(cand @ side)
+        if d > best_dot:
+            best, best_dot = centre + radius * cand, d
+    return best
+
+
+def _peg_wrap(
+    peg: PegSpec, before: FloatArray | None, after: FloatArray | None, cable_radius: float
+) -> list[FloatArray]:
+    """Points of a taut route wrapping ``peg`` between its neighbours."""
+    rho = peg.radius + cable_radius + 1e-4
+    axis = peg.position
+    ua = _unit(_horizontal(before - axis)) if before is not None else np.zeros(3)
+    ub = _unit(_horizontal(after - axis)) if after is not None else np.zeros(3)
+    inner = ua + ub
+    if float(np.linalg.norm(inner)) < 1e-9:  # straight through: pick the left side
+        ref = ub if after is not None else -ua
+        inner = np.array([ref[1], -ref[0], 0.0])
+        if float(np.linalg.norm(inner)) < 1e-9:
+            inner = np.array([0.0, -1.0, 0.0])
+    side = -_unit(inner)
+    # height: interpolate the neighbours, keep on the post
+    zs = [p[2] for p in (before, after) if p is not None]
+    z = float(np.mean(zs)) if zs else axis[2] + 0.5 * peg.height
+    lo, hi = axis[2] + cable_radius + 1e-3, axis[2] + peg.height - cable_radius - 1e-3
+    z = float(np.clip(z, lo, hi)) if lo < hi else axis[2] + 0.5 * peg.height
+    centre = np.array([axis[0], axis[1], z])
+    t1 = _tangent_point(before, centre, rho, side) if before is not None else centre + rho * side
+    t2 = _tangent_point(after, centre, rho, side) if after is not None else centre + rho * side
+    a1 = np.arctan2(t1[1] - centre[1], t1[0] - centre[0])
+    a2 = np.arctan2(t2[1] - centre[1], t2[0] - centre[0])
+    ao = np.arctan2(side[1], side[0])
+    # go from a1 to a2 through ao
+    d12 = (a2 - a1) % (2 * np.pi)
+    d1o = (ao - a1) % (2 * np.pi)
+    sweep = d12 if d1o <= d12 else d12 - 2 * np.pi
+    n = max(1, int(np.ceil(abs(sweep) / _ARC_STEP)))
+    angles = a1 + sweep * np.arange(n + 1) / n
+    return [centre + rho * np.array([np.cos(a), np.sin(a), 0.0]) for a in angles]
+
+
+def _clip_pass(clip: ClipSpec, before: FloatArray | None, length: float) -> list[FloatArray]:
+    half = 0.5 * length * clip.direction
+    ends = [clip.position - half, clip.position + half]
+    if before is not None and np.linalg.norm(ends[1] - before) < np.linalg.norm(ends[0] - before):
+        ends.reverse()
+    return ends
+
+
+def _interpolate(polyline: FloatArray, arcs: FloatArray, s: float) -> FloatArray:
+    """Point at arc length ``s`` on a polyline whose vertices have arc lengths ``arcs``."""
+    if s <= arcs[0]:
+        i = 0
+    elif s >= arcs[-1]:
+        i = len(arcs) - 2
+    else:
+        i = int(np.searchsorted(arcs, s, side="right")) - 1
+        i = min(i, len(arcs) - 2)
+    span = arcs[i + 1] - arcs[i]
+    t = (s - arcs[i]) / span if span > 1e-15 else 0.0
+    if s > arcs[-1] or s < arcs[0]:  # straight continuation at rest length
+        direction = _unit(polyline[i + 1] - polyline[i])
+        base: FloatArray = polyline[-1] if s > arcs[-1] else polyline[0]
+        result: FloatArray = base + (s - (arcs[-1] if s > arcs[-1] else arcs[0])) * direction
+        return result
+    point: FloatArray = polyline[i] + t * (polyline[i + 1] - polyline[i])
+    return point
+
+
+def initial_vertices(
+    world: WorldSpec,
+    cable: CableSpec,
+    disc: CableDiscretization,
+    clip_length: float,
+    table_height: float,
+) -> FloatArray:
+    """Vertex positions [m] of ``cable`` along its initial taut route.
+
+    Args:
+        world: The world (fixtures and gripper start poses).
+        cable: The cable.
+        disc: Its discretisation (vertex arc lengths).
+        clip_length: Length of a clip along its slot [m].
+        table_height: Height of the table [m] (a cable with no fixture and
+            no hold is laid on it).
+
+    Returns:
+        Positions of the N + 1 vertices.  # (N + 1, 3)
+
+    Raises:
+        SimulationError: if the route is so much longer than the cable that
+            the initial tension would exceed the force limit.
+    """
+    # nominal positions (fixture positions, gripper start points)
+    nominal: list[tuple[FloatArray, float | None, object]] = []
+    if cable.start is not None:
+        nominal.append((world.fixture(cable.start).position, 0.0, None))
+    for name in cable.via:
+        nominal.append((world.fixture(name).position, None, world.fixture(name)))
+    for h in cable.holds:
+        nominal.append((world.gripper(h.arm).position, h.at, None))
+    if not nominal:
+        start = np.array([0.0, 0.0, table_height + cable.radius])
+        direction = np.array([1.0, 0.0, 0.0])
+        return np.array([start + s * direction for s in disc.arc])
+    # expand fixtures into route points
+    points: list[FloatArray] = []
+    known: list[float | None] = []
+    for i, (pos, arc, fixture) in enumerate(nominal):
+        before = points[-1] if points else None
+        after = nominal[i + 1][0] if i + 1 < len(nominal) else None
+        if isinstance(fixture, PegSpec):
+            new = _peg_wrap(fixture, before, after, cable.radius)
+        elif isinstance(fixture, ClipSpec):
+            new = _clip_pass(fixture, before, clip_length)
+        else:
+            new = [np.asarray(pos, dtype=float)]
+        points.extend(new)
+        known.extend([arc] + [None] * (len(new) - 1) if arc is not None else [None] * len(new))
+    if len(points) == 1:
+        hold = cable.holds[0] if cable.holds else None
+        q = world.gripper(hold.arm).orientation if hold else np.array([1.0, 0.0, 0.0, 0.0])
+        x_tool = rotate(q, [1.0, 0.0, 0.0])
+        points = [points[0] - 0.1 * x_tool, points[0]]
+        known = [None, known[0]]
+    polyline = np.array(points)
+    dist = np.concatenate(([0.0], np.cumsum(np.linalg.norm(np.diff(polyline, axis=0), axis=1))))
+    idx = [i for i, k in enumerate(known) if k is not None]
+    arcs = np.empty(len(points))
+    if not idx:  # only fixtures: start at the first one
+        arcs[:] = dist
+    else:
+        for i in range(len(points)):
+            prev = [j for j in idx if j <= i]
+            nxt = [j for j in idx if j >= i]
+            if prev and nxt and prev[-1] != nxt[0]:
+                a, b = prev[-1], nxt[0]
+                sa, sb = known[a], known[b]
+                assert sa is not None and sb is not None
+                arcs[i] = sa + (sb - sa) * (dist[i] - dist[a]) / (dist[b] - dist[a])
+                stretch = (dist[b] - dist[a]) - (sb - sa)
+                if (
+                    stretch > 0.0
+                    and cable.stiffness * cable.length * stretch / max(sb - sa, 1e-12)
+                    > world.force_limit
+                ):
+                    raise SimulationError(
+                        f"cable {cable.name}: its initial route between arc lengths {sa} m and"
+                        f" {sb} m is {dist[b] - dist[a]:.4f} m long, so the cable would start"
+                        f" stretched beyond the force limit {world.force_limit} N"
+                    )
+            elif prev:
+                ka = known[prev[-1]]
+                assert ka is not None
+                arcs[i] = ka + dist[i] - dist[prev[-1]]
+            else:
+                kb = known[nxt[0]]
+                assert kb is not None
+                arcs[i] = kb - (dist[nxt[0]] - dist[i])
+    # remove duplicates in arc (coincident points)
+    keep = np.concatenate(([True], np.diff(arcs) > 1e-12))
+    polyline, arcs = polyline[keep], arcs[keep]
+    if len(arcs) == 1:
+        polyline = np.vstack([polyline, polyline[0] + [1e-3, 0.0, 0.0]])
+        arcs = np.array([arcs[0], arcs[0] + 1e-3])
+    return np.array([_interpolate(polyline, arcs, float(s)) for s in disc.arc])

@@ -1,0 +1,446 @@
+"""The simulated world: MuJoCo model and data behind one object.
+
+:class:`SimWorld` owns the only :class:`mujoco.MjData`. It steps the physics,
+drives the grippers kinematically (each physics step it writes the commanded
+pose and twist into the grippers' free joints, so friction sees their real
+velocity), grasps and releases the cable, measures the wrench each gripper
+transmits, and guards against divergence. Robots
+(:class:`tautwire.sim.sim_robot.SimRobot`) and the ground truth
+(:class:`tautwire.sim.ground_truth.GroundTruth`) are views on it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import SimulationError
+from tautwire.model.quaternion import to_rotation
+from tautwire.robot.arm import ARMS, Arm
+from tautwire.robot.command import GripperCommand
+from tautwire.sim.diverged import SimulationDiverged
+from tautwire.sim.gripper_state import GripperState, integrate_pose
+from tautwire.sim.mjcf import SceneModel, hold_equality, scene_model, vertex_body
+from tautwire.sim.options import SimOptions
+from tautwire.sim.spec import CableSpec, WorldSpec
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+
+_BAD_WARNINGS = (
+    mujoco.mjtWarning.mjWARN_BADQACC,
+    mujoco.mjtWarning.mjWARN_BADQPOS,
+    mujoco.mjtWarning.mjWARN_BADQVEL,
+)
+
+
+def compile_model(xml: str) -> mujoco.MjModel:
+    """Compile MJCF text, keeping MuJoCo's compile warnings off stdout.
+
+    The one expected warning (a flex whose edges carry no passive force: the
+    segment springs are tendons here) would otherwise be printed on stdout,
+    where ``--json`` output goes; any other warning is raised.
+
+    Raises:
+        SimulationError: if MuJoCo refuses the model or warns.
+    """
+    messages: list[str] = []
+    previous = mujoco.get_mju_user_warning()
+    mujoco.set_mju_user_warning(messages.append)
+    try:
+        model = mujoco.MjModel.from_xml_string(xml)
+    except ValueError as exc:
+        raise SimulationError(f"MuJoCo could not compile the scene: {exc}") from exc
+    finally:
+        mujoco.set_mju_user_warning(previous)
+    unexpected = [msg for msg in messages if "is not rigid and has no equality" not in msg]
+    if unexpected:
+        raise SimulationError(f"MuJoCo warned while compiling the scene: {unexpected[0]}")
+    return model
+
+
+@dataclass(frozen=True)
+class CableIndex:
+    """Where a cable lives in the compiled model.
+
+    Attributes:
+        spec: The cable.
+        body_ids: Body id of each vertex.  # (N + 1,)
+        dof_ids: Three dof ids per free vertex, -1 for a fixed one.  # (N + 1, 3)
+        tendon_ids: Spatial tendon id of each segment.  # (N,)
+        flex_id: Flex id.
+        hold_ids: Per arm, the connect equality id of each vertex (-1 for a
+            fixed one).  # (N + 1,) each
+    """
+
+    spec: CableSpec
+    body_ids: IntArray
+    dof_ids: IntArray
+    tendon_ids: IntArray
+    flex_id: int
+    hold_ids: dict[Arm, IntArray]
+
+
+class SimWorld:
+    """A MuJoCo world built from a :class:`WorldSpec`.
+
+    Building it compiles the scene, grasps the cable where the spec says and
+    lets everything settle (not part of the run's time).
+
+    Args:
+        spec: The world description.
+        options: Physics settings (defaults: :class:`SimOptions`).
+
+    Raises:
+        SimulationError: if the scene cannot be built (wave-speed guard,
+            over-stretched route, MuJoCo compile error) or diverges while
+            settling.
+    """
+
+    def __init__(self, spec: WorldSpec, options: SimOptions | None = None) -> None:
+        self._spec = spec
+        self._options = options or SimOptions()
+        opt = self._options
+        substeps = spec.control_period / opt.timestep
+        if abs(substeps - round(substeps)) > 1e-6 or round(substeps) < 1:
+            raise SimulationError(
+                f"the timestep {opt.timestep} s must divide the control period"
+                f" {spec.control_period} s"
+            )
+        self._substeps = round(substeps)
+        self._scene: SceneModel = scene_model(spec, opt)
+        self._model = compile_model(self._scene.xml)
+        self._data = mujoco.MjData(self._model)
+        m = self._model
+        self._cables: dict[str, CableIndex] = {}
+        for cable in spec.cables:
+            self._cables[cable.name] = self._index_cable(cable)
+        dofs = [c.dof_ids[c.dof_ids >= 0] for c in self._cables.values()]
+        self._cable_dofs: IntArray = (
+            np.concatenate(dofs).astype(np.int64) if dofs else np.zeros(0, np.int64)
+        )
+        self._cable_dof_mass = m.dof_M0[self._cable_dofs].copy() if len(dofs) else np.zeros(0)
+        self._gripper_qpos: dict[Arm, int] = {}
+        self._gripper_dof: dict[Arm, int] = {}
+        self._finger_qpos: dict[Arm, tuple[int, int]] = {}
+        self._finger_act: dict[Arm, tuple[int, int]] = {}
+        self._grippers: dict[Arm, GripperState] = {}
+        self._gripper_body: dict[Arm, int] = {}
+        for arm in ARMS:
+            jid = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_free")
+            self._gripper_qpos[arm] = int(m.jnt_qposadr[jid])
+            self._gripper_dof[arm] = int(m.jnt_dofadr[jid])
+            self._gripper_body[arm] = mujoco.mj_name2id(
+                m, mujoco.mjtObj.mjOBJ_BODY, f"{arm}_gripper"
+            )
+            fa = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_finger_a")
+            fb = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_finger_b")
+            self._finger_qpos[arm] = (int(m.jnt_qposadr[fa]), int(m.jnt_qposadr[fb]))
+            self._finger_act[arm] = (
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, f"{arm}_finger_a"),
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, f"{arm}_finger_b"),
+            )
+            g = spec.gripper(arm)
+            self._grippers[arm] = GripperState(
+                g.position.copy(), g.orientation.copy(), np.zeros(3), np.zeros(3)
+            )
+        self._wrench: dict[Arm, tuple[FloatArray, FloatArray]] = {
+            arm: (np.zeros(3), np.zeros(3)) for arm in ARMS
+        }
+        self._max_force = 0.0
+        self._warnings = 0
+        self._t0 = 0.0
+        self._damping_time = opt.cable_damping_time
+        # open every gripper, then grasp where the spec says
+        for arm in ARMS:
+            self.set_gripper(arm, GripperCommand("open"))
+        for cable in spec.cables:
+            disc = self._scene.discretizations[cable.name]
+            for h in cable.holds:
+                self._grasp(h.arm, cable.name, disc.vertex_at(h.at))
+                self._set_fingers(h.arm, "hold", opt.hold_grip_force)
+        self._write_grippers()
+        mujoco.mj_forward(m, self._data)
+        self._settle()
+        self._t0 = float(self._data.time)
+        self._max_force = 0.0
+
+    # ------------------------------------------------------------------ setup
+    def _index_cable(self, cable: CableSpec) -> CableIndex:
+        m = self._model
+        disc = self._scene.discretizations[cable.name]
+        n = disc.segments
+        body_ids = np.array(
+            [
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, vertex_body(cable.name, i))
+                for i in range(n + 1)
+            ],
+            dtype=np.int64,
+        )
+        dof_ids = np.full((n + 1, 3), -1, dtype=np.int64)
+        for i, b in enumerate(body_ids):
+            if m.body_dofnum[b] == 3:
+                dof_ids[i] = m.body_dofadr[b] + np.arange(3)
+        tendon_ids = np.array(
+            [
+                mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_TENDON, f"{cable.name}_t{i}")
+                for i in range(n)
+            ],
+            dtype=np.int64,
+        )
+        flex_id = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_FLEX, cable.name)
+        hold_ids: dict[Arm, IntArray] = {}
+        for arm in ARMS:
+            hold_ids[arm] = np.array(
+                [
+                    mujoco.mj_name2id(
+                        m, mujoco.mjtObj.mjOBJ_EQUALITY, hold_equality(arm, cable.name, i)
+                    )
+                    for i in range(n + 1)
+                ],
+                dtype=np.int64,
+            )
+        return CableIndex(cable, body_ids, dof_ids, tendon_ids, flex_id, hold_ids)
+
+    def _settle(self) -> None:
+        opt = self._options
+        if opt.settle_time <= 0.0:
+            return
+        self._damping_time = opt.settle_damping_time
+        steps = int(np.ceil(opt.settle_time / opt.timestep))
+        min_steps = int(np.ceil(0.1 / opt.timestep))
+        try:
+            for k in range(steps):
+                self._physics_step()
+                if k >= min_steps and k % 10 == 0:
+                    v = self._data.qvel[self._cable_dofs]
+                    if v.size == 0 or float(np.max(np.abs(v))) < opt.settle_speed:
+                        break
+        finally:
+            self._damping_time = opt.cable_damping_time
+
+    # --------------------------------------------------------------- queries
+    @property
+    def spec(self) -> WorldSpec:
+        """The world description."""
+        return self._spec
+
+    @property
+    def options(self) -> SimOptions:
+        """The physics settings."""
+        return self._options
+
+    @property
+    def time(self) -> float:
+        """Time [s] since the run started (after settling)."""
+        return float(self._data.time) - self._t0
+
+    @property
+    def timestep(self) -> float:
+        """Physics step dt [s]."""
+        return float(self._model.opt.timestep)
+
+    @property
+    def control_period(self) -> float:
+        """Period [s] of one robot command."""
+        return self._spec.control_period
+
+    @property
+    def substeps(self) -> int:
+        """Physics steps per control period."""
+        return self._substeps
+
+    @property
+    def max_force(self) -> float:
+        """Largest force [N] either gripper transmitted since the last reset."""
+        return self._max_force
+
+    def reset_max_force(self) -> None:
+        """Start a new window for :attr:`max_force` (e.g. at each task step)."""
+        self._max_force = 0.0
+
+    @property
+    def scene(self) -> SceneModel:
+        """The generated scene (MJCF text, discretisations, clip designs)."""
+        return self._scene
+
+    def gripper_pose(self, arm: Arm) -> tuple[FloatArray, FloatArray]:
+        """Tool centre point [m] and orientation [w, x, y, z] of ``arm``'s gripper."""
+        g = self._grippers[arm]
+        return g.position.copy(), g.orientation.copy()
+
+    def gripper_opening(self, arm: Arm) -> float:
+        """Distance [m] between the finger pads of ``arm``'s gripper."""
+        a, b = self._finger_qpos[arm]
+        return float(self._data.qpos[a] + self._data.qpos[b])
+
+    def gripper_grip_force(self, arm: Arm) -> float:
+        """Force [N] with which ``arm``'s fingers squeeze (0 when open)."""
+        return self._grippers[arm].grip_force
+
+    def gripper_mode(self, arm: Arm) -> str:
+        """Current finger mode of ``arm``."""
+        return self._grippers[arm].mode
+
+    def held(self, arm: Arm) -> tuple[str, int] | None:
+        """(cable, vertex) that ``arm`` holds rigidly, or None."""
+        return self._grippers[arm].held
+
+    def wrench(self, arm: Arm) -> tuple[FloatArray, FloatArray]:
+        """Noise-free wrench on ``arm``'s gripper from the last physics step.
+
+        Returns:
+            Force [N] that the cable and the gripper's contacts exert on the
+            gripper, world frame, and torque [N m] about the tool centre
+            point, world frame.
+        """
+        f, t = self._wrench[arm]
+        return f.copy(), t.copy()
+
+    # ------------------------------------------------------------- commands
+    def set_gripper(self, arm: Arm, command: GripperCommand) -> None:
+        """Apply a finger command: hold (grasp), open (release) or grip_force (slide)."""
+        g = self._grippers[arm]
+        if command.mode == "open":
+            self._release(arm)
+            self._set_fingers(arm, "open", 0.0)
+        elif command.mode == "grip_force":
+            self._release(arm)
+            self._set_fingers(arm, "grip_force", command.grip_force)
+        else:
+            if g.mode != "hold" and g.held is None:
+                target = self._nearest_vertex(arm)
+                if target is not None:
+                    self._grasp(arm, *target)
+            self._set_fingers(arm, "hold", self._options.hold_grip_force)
+
+    def set_twist(self, twist: FloatArray) -> None:
+        """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] [m/s, rad/s], shape (12,)."""
+        tw = np.asarray(twist, dtype=float)
+        for k, arm in enumerate(ARMS):
+            self._grippers[arm].linear = tw[6 * k : 6 * k + 3].copy()
+            self._grippers[arm].angular = tw[6 * k + 3 : 6 * k + 6].copy()
+
+    def step(self, n: int | None = None) -> None:
+        """Advance the physics by ``n`` steps (default: one control period).
+
+        Raises:
+            SimulationDiverged: on NaN/inf or a velocity blow-up.
+        """
+        self._physics_step(self._substeps if n is None else n)
+
+    # ------------------------------------------------------------- internals
+    def _set_fingers(self, arm: Arm, mode: str, force: float) -> None:
+        g = self._grippers[arm]
+        g.mode = mode  # type: ignore[assignment]
+        ctrl = self._options.open_force if mode == "open" else -force
+        g.grip_force = 0.0 if mode == "open" else force
+        for a in self._finger_act[arm]:
+            self._data.ctrl[a] = ctrl
+
+    def _grasp(self, arm: Arm, cable: str, vertex: int) -> None:
+        idx = self._cables[cable]
+        eq = int(idx.hold_ids[arm][vertex])
+        if eq < 0:
+            return
+        g = self._grippers[arm]
+        p_vertex = self._data.xpos[idx.body_ids[vertex]] if self._data.time > 0 else None
+        if p_vertex is None:
+            anchor = np.zeros(3)  # the vertex was built at the tool centre point
+        else:
+            anchor = to_rotation(g.orientation).inv().apply(p_vertex - g.position)
+        self._model.eq_data[eq, 0:3] = anchor
+        self._model.eq_data[eq, 3:6] = 0.0
+        self._data.eq_active[eq] = 1
+        g.held = (cable, vertex)
+
+    def _release(self, arm: Arm) -> None:
+        g = self._grippers[arm]
+        if g.held is not None:
+            cable, vertex = g.held
+            eq = int(self._cables[cable].hold_ids[arm][vertex])
+            self._data.eq_active[eq] = 0
+            g.held = None
+
+    def _nearest_vertex(self, arm: Arm) -> tuple[str, int] | None:
+        g = self._grippers[arm]
+        best: tuple[str, int] | None = None
+        best_d = self._options.grasp_distance
+        for name, idx in self._cables.items():
+            pts = self._data.xpos[idx.body_ids]
+            d = np.linalg.norm(pts - g.position, axis=1)
+            d[idx.hold_ids[arm] < 0] = np.inf
+            i = int(np.argmin(d))
+            if d[i] <= best_d:
+                best, best_d = (name, i), float(d[i])
+        return best
+
+    def _write_grippers(self) -> None:
+        d = self._data
+        inverse = np.empty(4)
+        for arm in ARMS:
+            g = self._grippers[arm]
+            qa, da = self._gripper_qpos[arm], self._gripper_dof[arm]
+            d.qpos[qa : qa + 3] = g.position
+            d.qpos[qa + 3 : qa + 7] = g.orientation
+            d.qvel[da : da + 3] = g.linear
+            # free-joint angular velocity is in the body frame
+            mujoco.mju_negQuat(inverse, g.orientation)
+            mujoco.mju_rotVecQuat(d.qvel[da + 3 : da + 6], g.angular, inverse)
+
+    def _physics_step(self, n: int = 1) -> None:
+        """Advance ``n`` physics steps with the grippers' twist held constant.
+
+        The grippers' pose and twist are written once; with their large
+        armature and gravity compensation the free joints then move at that
+        constant twist on their own (the constraint forces change a gripper's
+        velocity by about 1e-7 m/s per N and step), and the pose is rewritten
+        exactly at the next call.
+        """
+        m, d = self._model, self._data
+        self._write_grippers()
+        if self._damping_time > 0.0 and self._cable_dofs.size:
+            d.qfrc_applied[self._cable_dofs] = (
+                -self._cable_dof_mass / self._damping_time * d.qvel[self._cable_dofs]
+            )
+        mujoco.mj_step(m, d, n)
+        duration = n * m.opt.timestep
+        for arm in ARMS:
+            g = self._grippers[arm]
+            da = self._gripper_dof[arm]
+            qf = d.qfrc_constraint[da : da + 6]
+            force = qf[0:3].copy()
+            # the rotational part is the torque about the body origin (the tool centre
+            # point) in the body frame, at the orientation before the last step
+            q_last = g.orientation
+            if n > 1 and g.angular.any():
+                q_last = integrate_pose(
+                    g.position, g.orientation, g.linear, g.angular, duration - m.opt.timestep
+                )[1]
+            torque = np.empty(3)
+            mujoco.mju_rotVecQuat(torque, qf[3:6], q_last)
+            self._wrench[arm] = (force, torque)
+            fn = float(np.sqrt(force @ force))
+            if fn > self._max_force:
+                self._max_force = fn
+            if g.linear.any() or g.angular.any():
+                g.position, g.orientation = integrate_pose(
+                    g.position, g.orientation, g.linear, g.angular, duration
+                )
+        self._check()
+
+    def _check(self) -> None:
+        d = self._data
+        bad = sum(d.warning[int(w)].number for w in _BAD_WARNINGS)
+        speed = float(np.max(np.abs(d.qvel[self._cable_dofs]))) if self._cable_dofs.size else 0.0
+        if bad > self._warnings or not np.isfinite(speed) or speed > self._options.max_speed:
+            self._warnings = bad
+            raise SimulationDiverged(
+                f"the simulation diverged at t = {self.time:.4f} s (cable speed {speed:.3g} m/s,"
+                f" MuJoCo instability warnings {bad})"
+            )
+        if not (np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))):
+            raise SimulationDiverged(f"the simulation produced NaN/inf at t = {self.time:.4f} s")
