@@ -35,6 +35,7 @@ from tautwire.scenario.workspace import (
     WORKSPACE,
     Workspace,
 )
+from tautwire.scenario.writer import dump_scenario, scenario_document
 
 __all__ = [
     "GRIPPER_MIN_DISTANCE",
@@ -59,8 +60,10 @@ __all__ = [
     "SimSettings",
     "TaskStep",
     "Workspace",
+    "dump_scenario",
     "find_primitive",
     "load_scenario",
     "parse_scenario",
+    "scenario_document",
     "scenario_from_data",
 ]
