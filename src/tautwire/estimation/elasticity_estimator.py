@@ -132,9 +132,22 @@ class ElasticityEstimator:
         """The offset c [N]: the tension at the reference length l_ref."""
         return self._c
 
+    @property
+    def clamped(self) -> bool:
+        """True when the fitted k lies outside [k_min, k_max] (k_hat is the bound)."""
+        return not (self.k_min <= self._k <= self.k_max)
+
     def is_ready(self, max_relative_std: float = 0.1) -> bool:
-        """True once k is known to ``max_relative_std`` of k_hat (enough excitation)."""
-        return self.samples_used >= 3 and self.std <= max_relative_std * self.k_hat
+        """True once k is known to ``max_relative_std`` of k_hat and is not clamped.
+
+        A fit outside [k_min, k_max] (e.g. the length changed while the
+        tension did not) is not a stiffness, however small its variance.
+        """
+        return (
+            self.samples_used >= 3
+            and not self.clamped
+            and self.std <= max_relative_std * self.k_hat
+        )
 
     def update(self, tension: float, length: float) -> float:
         """Fuse one sample (equ:spring_measurement in affine form).

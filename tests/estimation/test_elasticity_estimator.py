@@ -1,0 +1,91 @@
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.estimation import ElasticityEstimator
+
+
+def stretch(k, seed, seconds=2.0, swing=1.5, freq=0.5, rate=250.0, noise=0.05):
+    """Length oscillation that swings the tension by ``swing`` N around 3 N (Hooke)."""
+    rng = np.random.default_rng(seed)
+    t = np.arange(int(seconds * rate)) / rate
+    amplitude = 0.5 * swing / k
+    length = 0.3 + amplitude * np.sin(2 * np.pi * freq * t + rng.uniform(0, 2 * np.pi))
+    tension = 3.0 + k * (length - 0.3) + rng.normal(0.0, noise, t.size)
+    return tension, length
+
+
+@pytest.mark.parametrize("k", [10.0, 100.0, 1000.0])
+def test_stiffness_within_5_percent_after_2_seconds(k):
+    for seed in range(10):
+        est = ElasticityEstimator()
+        history = [est.update(f, l_) for f, l_ in zip(*stretch(k, seed), strict=True)]
+        assert all(math.isfinite(h) and h > 0.0 for h in history)
+        assert abs(history[-1] / k - 1.0) <= 0.05
+        assert est.is_ready()
+        # the reported std is consistent with the error
+        assert abs(history[-1] - k) <= 4.0 * est.std
+
+
+def test_excitation_guard_skips_a_standing_gripper():
+    est = ElasticityEstimator(min_length_change=1e-5)
+    rng = np.random.default_rng(3)
+    for _ in range(500):
+        est.update(3.0 + rng.normal(0.0, 0.05), 0.3 + rng.normal(0.0, 1e-7))
+    assert est.samples_used == 1
+    assert est.k_hat == 100.0 and not est.is_ready()
+
+
+def test_clamped_to_the_range_never_negative():
+    est = ElasticityEstimator(k_range=(5.0, 500.0))
+    # tension falling while the cable lengthens: the raw fit is negative
+    for i in range(100):
+        est.update(5.0 - 0.01 * i, 0.3 + 1e-3 * i)
+    assert est.k_hat == 5.0 and est.clamped and not est.is_ready()
+    est = ElasticityEstimator(k_range=(5.0, 500.0))
+    for i in range(100):
+        est.update(1.0 + 10.0 * i, 0.3 + 1e-3 * i)  # 10 kN/m
+    assert est.k_hat == 500.0
+
+
+finite = st.floats(-1e3, 1e3, allow_nan=False)
+
+
+@settings(max_examples=50, deadline=None)
+@given(st.lists(st.tuples(st.one_of(finite, st.just(math.nan)), finite), max_size=50))
+def test_never_nan_or_negative(samples):
+    est = ElasticityEstimator()
+    for f, l_ in samples:
+        k = est.update(f, l_ * 1e-3)
+        assert math.isfinite(k) and est.k_min <= k <= est.k_max
+    assert math.isfinite(est.variance) and est.variance >= 0.0
+
+
+def test_forgetting_tracks_a_stiffness_change():
+    est = ElasticityEstimator(forgetting=0.99)
+    for f, l_ in zip(*stretch(100.0, 1, seconds=4.0), strict=True):
+        est.update(f, l_)
+    for f, l_ in zip(*stretch(300.0, 2, seconds=4.0), strict=True):
+        est.update(f, l_)
+    assert est.k_hat == pytest.approx(300.0, rel=0.05)
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        {"force_noise": 0.0},
+        {"forgetting": 0.0},
+        {"forgetting": 1.5},
+        {"k_range": (0.0, 10.0)},
+        {"k_range": (10.0, 1.0)},
+        {"k_initial_std": 0.0},
+        {"min_length_change": -1.0},
+    ],
+)
+def test_constructor_validates(kwargs):
+    with pytest.raises(InvalidArgumentError):
+        ElasticityEstimator(**kwargs)
