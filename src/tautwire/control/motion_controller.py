@@ -21,6 +21,7 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from tautwire.control import _quaternion_floats as qf
 from tautwire.control.quaternion_error import quaternion_error
 from tautwire.control.task_space import (
     CoordinatedPose,
@@ -30,7 +31,6 @@ from tautwire.control.task_space import (
     individual_twist,
 )
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import rotate
 
 FloatArray = NDArray[np.float64]
 
@@ -117,7 +117,8 @@ def coordinated_motion_command(
     zeta_abs = controller(desired.absolute, now.absolute)  # (6,)
     v_rel = controller.linear(desired.relative.position, now.relative.position)
     w_rel_right = controller.angular(desired.relative.orientation, now.relative.orientation)
-    w_rel = rotate(current.right.orientation, w_rel_right)  # right tool frame -> world
+    # right tool frame -> world
+    w_rel = qf.rotate_v(qf.quat(current.right.orientation), qf.vec(w_rel_right))
     return np.concatenate((zeta_abs, v_rel, w_rel))
 
 

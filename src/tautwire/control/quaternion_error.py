@@ -13,7 +13,8 @@ half the rotation vector theta n.
 
 Shortest path: Q and -Q are the same rotation. If the scalar part of Q_e,
 q_d0 q_c0 + q_d . q_c, is negative, e is negated, so that the controller
-always turns through the shorter way (theta <= pi). Under the P controller
+always turns through the shorter way (theta <= pi); at exactly a half turn
+both ways are equally short and the sign is that of the formula. Under the P controller
 omega = k_o e (world frame), the angle obeys theta_dot = -k_o sin(theta/2)
 about a fixed axis, and converges to 0 from any theta < pi.
 """

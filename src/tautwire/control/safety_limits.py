@@ -101,14 +101,17 @@ class SafetyLimits:
             InvalidArgumentError: if the twist does not have shape (12,) or is not finite.
         """
         out = np.array(twist, dtype=float)
-        if out.shape != (12,) or not np.all(np.isfinite(out)):
+        if out.shape != (12,):
             raise InvalidArgumentError(f"a twist is 12 finite numbers, got shape {out.shape}")
+        values = out.tolist()
+        if not all(map(math.isfinite, values)):
+            raise InvalidArgumentError("a twist is 12 finite numbers, got a NaN or infinity")
         for block, limit in enumerate(self._block_limits):
-            s = slice(3 * block, 3 * block + 3)
-            x, y, z = out[s]
+            i = 3 * block
+            x, y, z = values[i : i + 3]
             norm = math.sqrt(x * x + y * y + z * z)
             if norm > limit:
-                out[s] *= limit / norm
+                out[i : i + 3] *= limit / norm
         return out
 
     def check_force(self, force: ArrayLike, arm: str = "left") -> ForceCheck:

@@ -39,19 +39,19 @@ other, so individual -> coordinated -> individual is a round trip.
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from tautwire.control import _quaternion_floats as qf
 from tautwire.control.so3 import (
     inverse_left_jacobian_coefficients,
     left_jacobian_coefficients,
-    quaternion_log,
-    quaternion_sqrt,
 )
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import as_quaternion, conjugate, multiply, rotate
+from tautwire.model.quaternion import as_quaternion
 
 FloatArray = NDArray[np.float64]
 
@@ -115,14 +115,13 @@ def coordinated_pose(pose: DualPose) -> CoordinatedPose:
     Returns:
         The coordinated pose (quaternions with w >= 0).
     """
-    q_right = pose.right.orientation
-    q_rel = as_quaternion(multiply(conjugate(q_right), pose.left.orientation))
-    q_abs = as_quaternion(multiply(q_right, quaternion_sqrt(q_rel)))
+    q_right, q_rel = _right_and_relative(pose)
+    q_abs = qf.positive(qf.mul(q_right, qf.sqrt_q(q_rel)))
     p_left = np.asarray(pose.left.position, dtype=float)
     p_right = np.asarray(pose.right.position, dtype=float)
     return CoordinatedPose(
-        absolute=Pose(0.5 * (p_left + p_right), q_abs),
-        relative=Pose(p_left - p_right, q_rel),
+        absolute=Pose(0.5 * (p_left + p_right), np.array(q_abs)),
+        relative=Pose(p_left - p_right, np.array(q_rel)),
     )
 
 
@@ -135,13 +134,13 @@ def individual_pose(pose: CoordinatedPose) -> DualPose:
     Returns:
         The individual pose (quaternions with w >= 0).
     """
-    half = quaternion_sqrt(pose.relative.orientation)
-    q_abs = pose.absolute.orientation
+    half = qf.sqrt_q(qf.quat(pose.relative.orientation))
+    q_abs = qf.quat(pose.absolute.orientation)
     p_abs = np.asarray(pose.absolute.position, dtype=float)
     p_rel = np.asarray(pose.relative.position, dtype=float)
     return DualPose(
-        left=Pose(p_abs + 0.5 * p_rel, as_quaternion(multiply(q_abs, half))),
-        right=Pose(p_abs - 0.5 * p_rel, as_quaternion(multiply(q_abs, conjugate(half)))),
+        left=Pose(p_abs + 0.5 * p_rel, np.array(qf.positive(qf.mul(q_abs, half)))),
+        right=Pose(p_abs - 0.5 * p_rel, np.array(qf.positive(qf.mul(q_abs, qf.conj(half))))),
     )
 
 
@@ -155,9 +154,8 @@ def relative_rotation_vector(pose: DualPose) -> FloatArray:
         Rotation vector taking the right tool frame onto the left one,
         expressed in the world frame, |phi| <= pi.  # (3,)
     """
-    q_right = pose.right.orientation
-    q_rel = multiply(conjugate(q_right), pose.left.orientation)
-    return rotate(q_right, quaternion_log(q_rel))
+    q_right, q_rel = _right_and_relative(pose)
+    return np.array(qf.rotate_v(q_right, qf.log_q(q_rel)))
 
 
 def absolute_rate_matrix(pose: DualPose) -> FloatArray:
@@ -169,19 +167,45 @@ def absolute_rate_matrix(pose: DualPose) -> FloatArray:
     Returns:
         M, equal to I/2 when the grippers are parallel.  # (3, 3)
     """
-    phi = relative_rotation_vector(pose)  # (3,)
-    theta = float(np.linalg.norm(phi))
+    (x, y, z), a, b = _rate_coefficients(pose)
+    K = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])  # (3, 3)
+    M: FloatArray = 0.5 * (np.eye(3) + a * K + b * (K @ K))
+    return M
+
+
+def _right_and_relative(pose: DualPose) -> tuple[qf.Quat, qf.Quat]:
+    """Q_right and Q_rel = Q_right^-1 Q_left (w >= 0) as float tuples."""
+    q_right = qf.quat(pose.right.orientation)
+    q_rel = qf.positive(qf.mul(qf.conj(q_right), qf.quat(pose.left.orientation)))
+    return q_right, q_rel
+
+
+def _rate_coefficients(pose: DualPose) -> tuple[qf.Vec, float, float]:
+    """Unit axis n of phi (world frame) and (a, b) with M = 1/2 (I + a K + b K^2), K = [n]x."""
+    q_right, q_rel = _right_and_relative(pose)
+    px, py, pz = qf.rotate_v(q_right, qf.log_q(q_rel))
+    theta = math.sqrt(px * px + py * py + pz * pz)
     if theta == 0.0:
-        return 0.5 * np.eye(3)
+        return (1.0, 0.0, 0.0), 0.0, 0.0
     a1, b1 = left_jacobian_coefficients(0.5 * theta)
     a2, b2 = inverse_left_jacobian_coefficients(theta)
     # (I + a1 K + b1 K^2)(I + a2 K + b2 K^2) with K^3 = -K, K^4 = -K^2
     a = a1 + a2 - a1 * b2 - b1 * a2
     b = b1 + b2 + a1 * a2 - b1 * b2
-    x, y, z = phi / theta
-    K = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])  # (3, 3)
-    M: FloatArray = 0.5 * (np.eye(3) + a * K + b * (K @ K))
-    return M
+    return (px / theta, py / theta, pz / theta), a, b
+
+
+def _apply_rate(coefficients: tuple[qf.Vec, float, float], d: qf.Vec) -> qf.Vec:
+    """M d = 1/2 (d + a n x d + b n x (n x d))."""
+    (nx, ny, nz), a, b = coefficients
+    dx, dy, dz = d
+    cx, cy, cz = ny * dz - nz * dy, nz * dx - nx * dz, nx * dy - ny * dx  # n x d
+    ccx, ccy, ccz = ny * cz - nz * cy, nz * cx - nx * cz, nx * cy - ny * cx  # n x (n x d)
+    return (
+        0.5 * (dx + a * cx + b * ccx),
+        0.5 * (dy + a * cy + b * ccy),
+        0.5 * (dz + a * cz + b * ccz),
+    )
 
 
 def coordinated_velocity_matrix(pose: DualPose) -> FloatArray:
@@ -266,10 +290,26 @@ def _apply(twist: ArrayLike, pose: DualPose, *, coordinated: bool) -> FloatArray
     t = np.asarray(twist, dtype=float)
     if t.shape != (12,):
         raise InvalidArgumentError(f"a task-space twist has shape (12,), got {t.shape}")
-    M = absolute_rate_matrix(pose)  # (3, 3)
-    a, b, c, d = t[0:3], t[3:6], t[6:9], t[9:12]
+    coefficients = _rate_coefficients(pose)
+    a0, a1, a2, b0, b1, b2, c0, c1, c2, d0, d1, d2 = t.tolist()
     if coordinated:  # a, b, c, d = v_left, w_left, v_right, w_right
-        return np.concatenate((0.5 * (a + c), d + M @ (b - d), a - c, b - d))
-    # a, b, c, d = v_abs, w_abs, v_rel, w_rel
-    w_right = b - M @ d
-    return np.concatenate((a + 0.5 * c, w_right + d, a - 0.5 * c, w_right))
+        m0, m1, m2 = _apply_rate(coefficients, (b0 - d0, b1 - d1, b2 - d2))
+        return np.array(
+            [
+                *(0.5 * (a0 + c0), 0.5 * (a1 + c1), 0.5 * (a2 + c2)),
+                *(d0 + m0, d1 + m1, d2 + m2),
+                *(a0 - c0, a1 - c1, a2 - c2),
+                *(b0 - d0, b1 - d1, b2 - d2),
+            ]
+        )
+    # a, b, c, d = v_abs, w_abs, v_rel, w_rel; w_right = w_abs - M w_rel
+    m0, m1, m2 = _apply_rate(coefficients, (d0, d1, d2))
+    r0, r1, r2 = b0 - m0, b1 - m1, b2 - m2
+    return np.array(
+        [
+            *(a0 + 0.5 * c0, a1 + 0.5 * c1, a2 + 0.5 * c2),
+            *(r0 + d0, r1 + d1, r2 + d2),
+            *(a0 - 0.5 * c0, a1 - 0.5 * c1, a2 - 0.5 * c2),
+            *(r0, r1, r2),
+        ]
+    )
