@@ -84,3 +84,15 @@ def test_grippers_starting_on_top_of_each_other() -> None:
     data["robot"]["grippers"]["right"]["position"] = [0.35, 0.16, 0.12]
     field, message = field_of(data)
     assert field == "robot.grippers.right.position" and "apart" in message
+
+
+def test_via_fixtures_lie_before_the_first_hold_by_arc_length() -> None:
+    # Holds listed out of order: the route is P1 -> right (at 0.15) -> left (at 0.42).
+    data = example()
+    data["cables"][0]["start"] = None
+    data["cables"][0]["held_by"] = [{"arm": "left", "at": 0.42}, {"arm": "right", "at": 0.15}]
+    data["robot"]["grippers"]["right"]["position"] = [0.25, 0.05, 0.12]
+    assert scenario_from_data(data).cables[0].held_by[1].arm == "right"
+    data["robot"]["grippers"]["right"]["position"] = [0.35, -0.10, 0.12]
+    field, message = field_of(data)
+    assert field == "cables[0].held_by[1].at" and "P1 -> right gripper" in message

@@ -79,41 +79,35 @@ def check_geometry(scenario: Scenario) -> list[Issue]:
 def _check_route(scenario: Scenario, cable: CableSpec, here: Location) -> list[Issue]:
     """Check that enough cable spans each part of the cable's initial route.
 
-    The route's ends, ordered by arc length, are the start anchor (arc 0, if
-    any) and the holds. The ``via`` fixtures lie between the first two ends;
-    with a free start and a single hold they lie between the free end and
-    the hold. The straight-line polyline of each part must not be longer
-    than the arc length between its ends.
+    The route runs from the start anchor (arc length 0), or from the free
+    end, through the ``via`` fixtures in order to the first hold (smallest
+    ``at``), then on to the second hold. The straight-line polyline of each
+    part must not be longer than the cable between its ends; from a free
+    end, the part is measured from the first ``via`` fixture (the free end
+    may lie anywhere before it), which keeps it a lower bound.
     """
     fixtures = {f.name: f for f in scenario.board.fixtures}
     grippers = scenario.robot.grippers
-    ends: list[tuple[float, RoutePoint, Location]] = []
-    if cable.start is not None:
-        ends.append((0.0, RoutePoint(cable.start, fixtures[cable.start].position), ()))
     holds = sorted(enumerate(cable.held_by), key=lambda kv: kv[1].at)
-    for k, hold in holds:
-        start = grippers.left if hold.arm == "left" else grippers.right
-        ends.append((hold.at, RoutePoint(f"{hold.arm} gripper", start.position), ("held_by", k)))
+    first: RoutePoint | None = None
+    if cable.start is not None:
+        first = RoutePoint(cable.start, fixtures[cable.start].position)
     via = [fixtures[name] for name in cable.via]
-    free_end = len(ends) == 1
     issues: list[Issue] = []
-    for n in range(1 if free_end else len(ends) - 1):
-        if free_end:
-            first_arc, last_arc = 0.0, ends[0][0]
-            points = _route_points(via, None, ends[0][1])
-            loc = ends[0][2]
-        else:
-            first_arc, last_arc = ends[n][0], ends[n + 1][0]
-            points = _route_points(via if n == 0 else [], ends[n][1], ends[n + 1][1])
-            loc = ends[n + 1][2]
+    arc = 0.0
+    for n, (k, hold) in enumerate(holds):
+        start = grippers.left if hold.arm == "left" else grippers.right
+        gripper = RoutePoint(f"{hold.arm} gripper", start.position)
+        points = _route_points(via if n == 0 else [], first, gripper)
+        span = hold.at - arc
+        first, arc = gripper, hold.at
         if len(points) < 2:
             continue
         route = sum(math.dist(a.position, b.position) for a, b in itertools.pairwise(points))
-        span = last_arc - first_arc
         if route <= span + ROUTE_TOLERANCE:
             continue
         path = " -> ".join(p.label for p in points)
-        if last_arc == cable.length and first_arc == 0.0:
+        if n == 0 and hold.at == cable.length:
             issues.append(
                 Issue(
                     (*here, "length"),
@@ -124,7 +118,7 @@ def _check_route(scenario: Scenario, cable: CableSpec, here: Location) -> list[I
         else:
             issues.append(
                 Issue(
-                    (*here, *loc, "at"),
+                    (*here, "held_by", k, "at"),
                     f"{span:g} m of cable {cable.name} cannot span the route {path} of "
                     f"{route:.3f} m (expected at least {route:.3f} m of cable there)",
                 )
