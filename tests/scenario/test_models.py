@@ -25,7 +25,6 @@ def test_defaults_of_optional_settings() -> None:
     assert s.seed == 0
     assert (s.robot.control_period, s.robot.force_limit) == (0.004, 15.0)
     assert s.robot.sensor == SensorSettings(arm="left", noise_force=0.05, noise_torque=0.002)
-    assert (s.sim.timestep, s.sim.segments) == (None, None)
 
 
 def test_orientation_is_normalised() -> None:
@@ -97,10 +96,8 @@ def test_task_step_letter_must_match_its_primitive() -> None:
         )
 
 
-def test_sim_settings_are_checked() -> None:
+def test_simulation_settings_are_not_part_of_the_file() -> None:
     data = example()
-    data["sim"] = {"timestep": 0.0005, "segments": 40}
-    assert Scenario.model_validate(data).sim.segments == 40
-    data["sim"] = {"segments": 1}
-    with pytest.raises(ValidationError):
+    data["sim"] = {"timestep": 0.0005}
+    with pytest.raises(ValidationError, match="extra"):
         Scenario.model_validate(data)

@@ -15,9 +15,8 @@ def test_round_trip_through_text(path: Path) -> None:
     assert parse_scenario(dump_scenario(scenario)) == scenario
 
 
-def test_document_writes_steps_flat_and_omits_unset_sim() -> None:
+def test_document_writes_steps_flat() -> None:
     document = scenario_document(load_scenario(SCENARIOS / "peg-and-clip.yaml"))
     assert document["task"][0] == {"primitive": "single_arm_tension", "arm": "left", "force": 3.0}
-    assert "sim" not in document
     assert document["robot"]["grippers"]["left"]["position"] == [0.35, 0.15, 0.12]
     assert scenario_from_data(document).name == "peg-and-clip"

@@ -19,7 +19,6 @@ from tautwire.scenario.models import (
     RobotSettings,
     Scenario,
     SensorSettings,
-    SimSettings,
     TaskStep,
 )
 from tautwire.scenario.primitive_catalogue import (
@@ -57,7 +56,6 @@ __all__ = [
     "Scenario",
     "ScenarioError",
     "SensorSettings",
-    "SimSettings",
     "TaskStep",
     "Workspace",
     "dump_scenario",

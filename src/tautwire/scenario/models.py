@@ -294,18 +294,6 @@ class TaskStep(_Model):
         return find_primitive(self.primitive)
 
 
-class SimSettings(_Model):
-    """Optional simulation resolution; ``None`` leaves the simulator's default.
-
-    Attributes:
-        timestep: physics time step [s].
-        segments: number of segments the cable is discretised into.
-    """
-
-    timestep: float | None = Field(None, gt=0.0, le=0.01, description="physics time step [s]")
-    segments: int | None = Field(None, ge=2, le=1000, description="cable segments")
-
-
 class Scenario(_Model):
     """A whole scenario file: robot, board, cables and task.
 
@@ -317,7 +305,6 @@ class Scenario(_Model):
         board: the fixtures.
         cables: the cables.
         task: primitives run in order.
-        sim: optional simulation resolution.
     """
 
     version: Literal[1]
@@ -327,7 +314,6 @@ class Scenario(_Model):
     board: Board
     cables: list[CableSpec]
     task: list[TaskStep]
-    sim: SimSettings = SimSettings()
 
     @model_validator(mode="after")
     def _consistent(self) -> Scenario:

@@ -13,15 +13,11 @@ def scenario_document(scenario: Scenario) -> dict[str, Any]:
     """The plain data a scenario file holds (steps flat, tuples as lists).
 
     ``scenario_from_data(scenario_document(s)) == s`` for every scenario.
-    Unset optional simulation settings are left out.
     """
-    document: dict[str, Any] = _plain(scenario.model_dump(exclude={"task", "sim"}))
+    document: dict[str, Any] = _plain(scenario.model_dump(exclude={"task"}))
     document["task"] = [
         {"primitive": step.primitive, **_plain(step.params)} for step in scenario.task
     ]
-    sim = scenario.sim.model_dump(exclude_none=True)
-    if sim:
-        document["sim"] = sim
     return document
 
 
