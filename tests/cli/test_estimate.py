@@ -5,7 +5,7 @@ import pytest
 
 from tautwire.cli.main import main
 from tautwire.estimation import write_force_log
-from tests.estimation.synthetic import circle
+from tautwire.experiments.synthetic_circle import circle
 
 
 @pytest.fixture

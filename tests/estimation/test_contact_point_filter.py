@@ -11,7 +11,7 @@ from tautwire.estimation import (
     contact_point_least_squares,
     kalman_update,
 )
-from tests.estimation.synthetic import circle
+from tautwire.experiments.synthetic_circle import circle
 
 SEEDS = range(20)
 

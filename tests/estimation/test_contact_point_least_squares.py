@@ -5,7 +5,7 @@ from hypothesis import strategies as st
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import contact_normal_equations, contact_point_least_squares
-from tests.estimation.synthetic import circle
+from tautwire.experiments.synthetic_circle import circle
 
 coord = st.floats(-1.0, 1.0)
 point = st.tuples(coord, coord, coord).map(np.array)

@@ -1,7 +1,7 @@
 import numpy as np
 
 from tautwire.estimation import estimate_force_log, read_force_log, write_force_log
-from tests.estimation.synthetic import CONTACT, circle
+from tautwire.experiments.synthetic_circle import CONTACT, circle
 
 
 def breathing_circle(k, seed, n=500):

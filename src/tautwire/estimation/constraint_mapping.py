@@ -49,16 +49,20 @@ def constraint_matrix(arc_lengths: ArrayLike, constrained: list[int]) -> FloatAr
     if constrained[0] < 0 or constrained[-1] >= s.size:
         raise InvalidArgumentError(f"constrained indices must lie in [0, {s.size - 1}]")
     M = np.zeros((s.size, len(constrained)))
+    arc = s.tolist()
+    j = -1  # index in ``constrained`` of the last constrained point at or before i
+    last = len(constrained) - 1
     for i in range(s.size):
-        j = int(np.searchsorted(constrained, i, side="right")) - 1
+        while j < last and constrained[j + 1] <= i:
+            j += 1
         if j < 0:
             M[i, 0] = 1.0
-        elif j == len(constrained) - 1 or constrained[j] == i:
+        elif j == last or constrained[j] == i:
             M[i, j] = 1.0
         else:
             a, b = constrained[j], constrained[j + 1]
-            span = s[b] - s[a]
-            w = (s[i] - s[a]) / span if span > 0.0 else 0.0
+            span = arc[b] - arc[a]
+            w = (arc[i] - arc[a]) / span if span > 0.0 else 0.0
             M[i, j] = 1.0 - w  # weight of the constrained point before
             M[i, j + 1] = w  # and of the one after
     return M

@@ -9,6 +9,8 @@ of its one edge, an inner point half of each of its two edges,
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -28,11 +30,11 @@ def point_masses(lengths: ArrayLike, mass_per_length: float) -> FloatArray:
         m_1 ... m_|V| [kg].  # (E + 1,)
     """
     d = np.asarray(lengths, dtype=float).reshape(-1)
-    if mass_per_length < 0.0 or not np.isfinite(mass_per_length):
+    if not (mass_per_length >= 0.0 and math.isfinite(mass_per_length)):
         raise InvalidArgumentError(f"mass_per_length must be >= 0 kg/m, got {mass_per_length}")
-    if np.any(d < 0.0) or not np.all(np.isfinite(d)):
+    if d.size and not (d.min() >= 0.0 and math.isfinite(d.sum())):
         raise InvalidArgumentError("edge lengths must be finite and >= 0 m")
-    half = 0.5 * mass_per_length * d
+    half = (0.5 * mass_per_length) * d
     masses = np.zeros(d.size + 1)
     masses[:-1] += half
     masses[1:] += half

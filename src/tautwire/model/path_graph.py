@@ -12,7 +12,7 @@ from tautwire.model.edge import Edge
 from tautwire.model.feature_point import FeatureKind, FeaturePoint
 from tautwire.model.interpolation import lerp, slerp
 from tautwire.model.mass import point_masses
-from tautwire.model.sag import sag
+from tautwire.model.sag import sag_from_span
 
 FloatArray = NDArray[np.float64]
 
@@ -125,8 +125,10 @@ class PathGraph:
 
     def sags(self) -> FloatArray:
         """s_i [m] of every edge (equ:catenarySlack) at the current positions, shape (N - 1,)."""
-        p = self.positions
-        return np.array([sag(p[i], p[i + 1], e.length) for i, e in enumerate(self.edges)])
+        delta = np.diff(self.positions, axis=0)  # (N - 1, 3)
+        a = np.hypot(delta[:, 0], delta[:, 1]).tolist()
+        h = delta[:, 2].tolist()
+        return np.array([sag_from_span(a[i], h[i], e.length) for i, e in enumerate(self.edges)])
 
     def locate(self, arc_length: float) -> tuple[int, float]:
         """The edge index and fraction delta at which ``arc_length`` [m] lies."""
@@ -156,13 +158,13 @@ class PathGraph:
 
     def set_positions(self, positions: ArrayLike) -> None:
         """Set every point's position [m] and refresh masses and sags, shape (N, 3)."""
-        p = np.asarray(positions, dtype=float)
+        p = np.array(positions, dtype=float)  # a copy: the points own its rows
         if p.shape != (len(self.points), 3) or not np.all(np.isfinite(p)):
             raise InvalidArgumentError(
                 f"positions must be finite with shape ({len(self.points)}, 3)"
             )
         for pt, pi in zip(self.points, p, strict=True):
-            pt.position = pi.copy()
+            pt.position = pi
         self.refresh()
 
     def orient_along_edges(self, keep: Sequence[FeatureKind] = ("gripper",)) -> None:

@@ -7,6 +7,8 @@ interface.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.spatial.transform import Rotation
@@ -83,15 +85,14 @@ def orientation_along(direction: ArrayLike) -> FloatArray:
     Returns:
         Unit quaternion [w, x, y, z].  # (4,)
     """
-    d = np.asarray(direction, dtype=float)
-    n = float(np.linalg.norm(d))
-    if n < 1e-12 or not np.isfinite(n):
+    dx, dy, dz = (float(v) for v in np.asarray(direction, dtype=float).reshape(3))
+    n = math.sqrt(dx * dx + dy * dy + dz * dz)
+    if n < 1e-12 or not math.isfinite(n):
         return IDENTITY.copy()
-    d = d / n
-    x = np.array([1.0, 0.0, 0.0])
-    c = float(np.dot(x, d))
+    c = dx / n  # cos of the angle between x and the direction
     if c < -1.0 + 1e-12:  # opposite: half turn about z keeps "no twist" about the cable
         return np.array([0.0, 0.0, 0.0, 1.0])
-    axis = np.cross(x, d)
-    q = np.array([1.0 + c, axis[0], axis[1], axis[2]])
-    return as_quaternion(q)
+    # q = [1 + c, x cross d] normalised: the half-angle rotation from x to d
+    w, y, z = 1.0 + c, -dz / n, dy / n
+    m = math.sqrt(w * w + y * y + z * z)
+    return np.array([w / m, 0.0, y / m, z / m])

@@ -1,4 +1,4 @@
-"""Seeded synthetic force data with known truth for the estimation tests."""
+"""Seeded synthetic force data with known truth: a gripper circling a contact."""
 
 from __future__ import annotations
 

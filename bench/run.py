@@ -1,0 +1,169 @@
+"""tautwire benchmarks: prints one JSON object.
+
+    .venv/bin/python bench/run.py --json            # everything
+    .venv/bin/python bench/run.py --json --quick    # fewer repetitions
+
+Figures (medians over thousands of repetitions, microseconds unless named):
+- control_tick_us: one full control tick of primitive I's loop: model update
+  by constraints + contact filter update + elasticity update + hybrid
+  controller for both arms;
+- kf_update_us: one ContactPointFilter.update;
+- filterpy_kf_update_us: the same measurement fused by filterpy's textbook
+  KalmanFilter (predict + update, z/H/R built the same way) as the reference;
+- control_tick_filterpy_us: the control tick with filterpy's filter instead;
+- elasticity_update_us, hybrid_controller_us, model_update_us: the parts;
+- sim_step_us, sim_realtime_factor: the simulated world, where available.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+
+from tautwire.control import DualPose, HybridController, Pose, SafetyLimits
+from tautwire.estimation import (
+    ContactPointFilter,
+    ElasticityEstimator,
+    contact_observation,
+    update_by_constraints,
+)
+from tautwire.experiments.synthetic_circle import circle
+from tautwire.model import PathGraph
+
+
+def median_us(fn: Callable[[int], object], n: int, warmup: int = 200) -> float:
+    """Median wall time of fn(i) over n calls after a warm-up [us]."""
+    for i in range(warmup):
+        fn(i)
+    times = np.empty(n)
+    for i in range(n):
+        t0 = time.perf_counter()
+        fn(i)
+        times[i] = time.perf_counter() - t0
+    return round(float(np.median(times)) * 1e6, 2)
+
+
+def control_benchmarks(n: int) -> dict[str, Any]:
+    data = circle(seed=1, n=n + 400, samples_per_circle=125, tension=4.0)
+    p, f = data.p_gripper, data.f_sens
+    contact = data.contact[0]
+
+    def fresh_filter() -> ContactPointFilter:
+        kf = ContactPointFilter(force_noise=0.05)
+        for i in range(40):  # past initialisation: measure the running update
+            kf.update(p[i], f[i])
+        return kf
+
+    kf = fresh_filter()
+    kf_us = median_us(lambda i: kf.update(p[40 + i % n], f[40 + i % n]), n)
+
+    from filterpy.kalman import KalmanFilter
+
+    ref_state = fresh_filter()
+    fkf = KalmanFilter(dim_x=3, dim_z=2)
+    fkf.x = ref_state.x.copy()
+    fkf.P = ref_state.P.copy()
+    fkf.F = np.eye(3)
+    fkf.Q = ref_state.Q.copy()
+
+    def filterpy_update(i: int) -> None:
+        j = 40 + i % n
+        obs = contact_observation(p[j], f[j], float(np.linalg.norm(p[j] - fkf.x)), 0.05)
+        fkf.predict()
+        fkf.update(obs.z, H=obs.H, R=obs.R)
+
+    fp_us = median_us(filterpy_update, n)
+
+    est = ElasticityEstimator(force_noise=0.05)
+    lengths = 0.2 + 0.002 * np.sin(np.arange(n + 400) * 0.05)
+    tensions = 200.0 * (lengths - 0.19)
+    el_us = median_us(lambda i: est.update(tensions[i % n], lengths[i % n]), n)
+
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    controller = HybridController(limits=SafetyLimits(max_force=15.0))
+    right = Pose(np.array([0.35, -0.25, 0.12]), q)
+
+    def hybrid(i: int) -> np.ndarray:
+        j = i % n
+        current = DualPose(Pose(p[j], q), right)
+        return controller(current, current, (4.0, None), (f[j], None), 200.0)
+
+    hy_us = median_us(hybrid, n)
+
+    graph = PathGraph.from_positions(
+        [contact, p[0], p[0] + [0.0, 0.0, -0.1]],
+        mass_per_length=0.03,
+        kinds=["contact", "gripper", "free"],
+    )
+    mu_us = median_us(lambda i: update_by_constraints(graph, {0: contact, 1: p[i % n]}), n)
+
+    def tick(kf_update: Callable[[int], object]) -> Callable[[int], None]:
+        def run(i: int) -> None:
+            j = 40 + i % n
+            kf_update(i)
+            estimate = kf.x
+            update_by_constraints(graph, {0: estimate, 1: p[j]})
+            length = float(np.linalg.norm(p[j] - estimate))
+            est.update(float(np.linalg.norm(f[j])), length)
+            current = DualPose(Pose(p[j], q), right)
+            controller(current, current, (4.0, None), (f[j], None), est.k_hat, (estimate - p[j], None))
+
+        return run
+
+    kf = fresh_filter()
+    tick_us = median_us(tick(lambda i: kf.update(p[40 + i % n], f[40 + i % n])), n)
+    tick_fp_us = median_us(tick(filterpy_update), n)
+    return {
+        "control_tick_us": tick_us,
+        "control_tick_filterpy_us": tick_fp_us,
+        "kf_update_us": kf_us,
+        "filterpy_kf_update_us": fp_us,
+        "kf_speedup_vs_filterpy": round(fp_us / kf_us, 2),
+        "elasticity_update_us": el_us,
+        "hybrid_controller_us": hy_us,
+        "model_update_us": mu_us,
+        "control_period_us": 4000.0,
+    }
+
+
+def sim_benchmarks(seconds: float) -> dict[str, Any]:
+    try:
+        from tautwire.experiments.bench_scene import measure_sim_speed
+    except ImportError as exc:  # the simulated world is not available
+        return {"sim_error": f"not available: {exc}"}
+    return measure_sim_speed(seconds)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--json", action="store_true", help="print one JSON object (default)")
+    parser.add_argument("--quick", action="store_true", help="fewer repetitions")
+    parser.add_argument("--no-sim", action="store_true", help="skip the simulation figures")
+    args = parser.parse_args(argv)
+    n = 2000 if args.quick else 10000
+    result: dict[str, Any] = {
+        "machine": {
+            "cpu": platform.processor() or platform.machine(),
+            "python": platform.python_version(),
+            "numpy": np.__version__,
+            "platform": platform.platform(),
+        },
+        "repetitions": n,
+    }
+    result.update(control_benchmarks(n))
+    if not args.no_sim:
+        result.update(sim_benchmarks(2.0 if args.quick else 10.0))
+    json.dump(result, sys.stdout, indent=2)
+    sys.stdout.write("\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
