@@ -71,7 +71,10 @@ def discretize_cable(
             ``options.max_mass_scaling``.
     """
     length = cable.length
-    target = min(options.segment_length, length / options.min_segments)
+    if options.segments is not None:
+        target = length / options.segments
+    else:
+        target = min(options.segment_length, length / options.min_segments)
     breaks = sorted({0.0, length, *(h.at for h in cable.holds)})
     arcs: list[float] = [0.0]
     for a, b in itertools.pairwise(breaks):

@@ -109,21 +109,20 @@ def _gripper_xml(arm: Arm, world: WorldSpec, options: SimOptions) -> str:
 
 
 def _peg_xml(peg: PegSpec, options: SimOptions) -> str:
+    """A peg, and below its base a collidable stand of the same radius down to the table.
+
+    A post is mounted on the board: a cable that sags below the post's base
+    must not slip underneath it.
+    """
     p = peg.position
-    centre = p + np.array([0.0, 0.0, 0.5 * peg.height])
-    out = (
+    bottom = min(p[2], options.table_height)
+    top = p[2] + peg.height
+    centre = np.array([p[0], p[1], 0.5 * (bottom + top)])
+    return (
         f'<geom name="{peg.name}" type="cylinder" pos="{_v(centre)}" size="{peg.radius:.6g}'
-        f' {0.5 * peg.height:.6g}" contype="{_FIXTURE}" conaffinity="{_CABLE}" condim="3"'
+        f' {0.5 * (top - bottom):.6g}" contype="{_FIXTURE}" conaffinity="{_CABLE}" condim="3"'
         f' friction="{options.peg_friction} 0.005 0.0001" {_STIFF_CONTACT} rgba="0.55 0.55 0.6 1"/>'
     )
-    stand = p[2] - options.table_height
-    if stand > 1e-4:
-        out += (
-            f'<geom type="cylinder" pos="{_v([p[0], p[1], options.table_height + 0.5 * stand])}"'
-            f' size="{0.7 * peg.radius:.6g} {0.5 * stand:.6g}" contype="0" conaffinity="0"'
-            ' rgba="0.4 0.4 0.45 1"/>'
-        )
-    return out
 
 
 def _anchor_xml(anchor: AnchorSpec, options: SimOptions) -> str:

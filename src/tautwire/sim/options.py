@@ -23,6 +23,8 @@ class SimOptions:
         segment_length: Target rest length [m] of one cable segment; the
             actual segments are at most this long and a vertex sits at every
             held arc length.
+        segments: If set, the target number of segments per cable (overrides
+            ``segment_length``; a vertex at a held point may add one or two).
         min_segments: Fewest segments per cable.
         max_mass_scaling: Largest vertex mass scaling alpha that the
             wave-speed guard may choose before it refuses the scene.
@@ -34,7 +36,12 @@ class SimOptions:
         pad_friction: Friction coefficient of the finger pads on the cable.
         peg_friction: Friction coefficient of pegs and clips on the cable.
         table_friction: Friction coefficient of the table on the cable.
-        hold_grip_force: Grip force [N] of a closed gripper in mode "hold".
+        hold_grip_force: Grip force [N] that a gripper in mode "hold" reports
+            (its nominal full grip). The simulated hold itself is rigid: a
+            ``connect`` equality at the tool centre point, with the fingers
+            held closed around the cable without squeezing it, so the cable
+            pivots at the grasp point as in the paper's point model.
+        hold_clearance: Gap [m] between each finger pad and the held cable.
         open_force: Force [N] that opens the fingers in mode "open".
         max_opening: Largest distance between the finger pads [m].
         grasp_distance: Largest distance [m] from the tool centre point to a
@@ -51,6 +58,7 @@ class SimOptions:
 
     timestep: float = 0.001
     segment_length: float = 0.02
+    segments: int | None = None
     min_segments: int = 8
     max_mass_scaling: float = 64.0
     wave_speed_safety: float = 0.8
@@ -59,7 +67,8 @@ class SimOptions:
     pad_friction: float = 0.5
     peg_friction: float = 0.2
     table_friction: float = 0.3
-    hold_grip_force: float = 2.0
+    hold_grip_force: float = 10.0
+    hold_clearance: float = 2e-4
     open_force: float = 5.0
     max_opening: float = 0.04
     grasp_distance: float = 0.012
@@ -73,6 +82,8 @@ class SimOptions:
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
+            if f.name == "segments" and value is None:
+                continue
             if not np.isfinite(value):
                 raise InvalidArgumentError(f"option {f.name} must be finite, got {value}")
             allow_zero = f.name in (

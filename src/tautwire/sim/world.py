@@ -26,6 +26,7 @@ from tautwire.sim.gripper_state import GripperState, integrate_pose
 from tautwire.sim.mjcf import SceneModel, hold_equality, scene_model, vertex_body
 from tautwire.sim.options import SimOptions
 from tautwire.sim.spec import CableSpec, WorldSpec
+from tautwire.sim.transmitted_wrench import free_joint_wrench
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -126,19 +127,29 @@ class SimWorld:
         self._gripper_qpos: dict[Arm, int] = {}
         self._gripper_dof: dict[Arm, int] = {}
         self._finger_qpos: dict[Arm, tuple[int, int]] = {}
+        self._finger_dof: dict[Arm, tuple[int, int]] = {}
         self._finger_act: dict[Arm, tuple[int, int]] = {}
         self._grippers: dict[Arm, GripperState] = {}
         self._gripper_body: dict[Arm, int] = {}
+        self._gripper_bodies: dict[Arm, IntArray] = {}
         for arm in ARMS:
             jid = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_free")
             self._gripper_qpos[arm] = int(m.jnt_qposadr[jid])
             self._gripper_dof[arm] = int(m.jnt_dofadr[jid])
+            self._gripper_bodies[arm] = np.array(
+                [
+                    mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_BODY, f"{arm}_{part}")
+                    for part in ("gripper", "finger_a", "finger_b")
+                ],
+                dtype=np.int64,
+            )
             self._gripper_body[arm] = mujoco.mj_name2id(
                 m, mujoco.mjtObj.mjOBJ_BODY, f"{arm}_gripper"
             )
             fa = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_finger_a")
             fb = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_JOINT, f"{arm}_finger_b")
             self._finger_qpos[arm] = (int(m.jnt_qposadr[fa]), int(m.jnt_qposadr[fb]))
+            self._finger_dof[arm] = (int(m.jnt_dofadr[fa]), int(m.jnt_dofadr[fb]))
             self._finger_act[arm] = (
                 mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, f"{arm}_finger_a"),
                 mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_ACTUATOR, f"{arm}_finger_b"),
@@ -162,6 +173,15 @@ class SimWorld:
             for h in cable.holds:
                 self._grasp(h.arm, cable.name, disc.vertex_at(h.at))
                 self._set_fingers(h.arm, "hold", opt.hold_grip_force)
+        for arm in ARMS:
+            held = self._grippers[arm].held
+            q = (
+                self._cables[held[0]].spec.radius + opt.hold_clearance
+                if held
+                else 0.5 * opt.max_opening
+            )
+            for adr in self._finger_qpos[arm]:
+                self._data.qpos[adr] = q
         self._write_grippers()
         mujoco.mj_forward(m, self._data)
         self._settle()
@@ -336,7 +356,7 @@ class SimWorld:
     def _set_fingers(self, arm: Arm, mode: str, force: float) -> None:
         g = self._grippers[arm]
         g.mode = mode  # type: ignore[assignment]
-        ctrl = self._options.open_force if mode == "open" else -force
+        ctrl = {"open": self._options.open_force, "hold": 0.0}.get(mode, -force)
         g.grip_force = 0.0 if mode == "open" else force
         for a in self._finger_act[arm]:
             self._data.ctrl[a] = ctrl
@@ -390,6 +410,13 @@ class SimWorld:
             # free-joint angular velocity is in the body frame
             mujoco.mju_negQuat(inverse, g.orientation)
             mujoco.mju_rotVecQuat(d.qvel[da + 3 : da + 6], g.angular, inverse)
+            if g.mode == "hold":  # fingers closed around the held cable, not squeezing
+                gap = 0.0
+                if g.held is not None:
+                    gap = self._cables[g.held[0]].spec.radius + self._options.hold_clearance
+                for adr, dof in zip(self._finger_qpos[arm], self._finger_dof[arm], strict=True):
+                    d.qpos[adr] = gap
+                    d.qvel[dof] = 0.0
 
     def _physics_step(self, n: int = 1) -> None:
         """Advance ``n`` physics steps with the grippers' twist held constant.
@@ -410,18 +437,13 @@ class SimWorld:
         duration = n * m.opt.timestep
         for arm in ARMS:
             g = self._grippers[arm]
-            da = self._gripper_dof[arm]
-            qf = d.qfrc_constraint[da : da + 6]
-            force = qf[0:3].copy()
-            # the rotational part is the torque about the body origin (the tool centre
-            # point) in the body frame, at the orientation before the last step
+            # the forces were computed at the pose before the last step
             q_last = g.orientation
             if n > 1 and g.angular.any():
                 q_last = integrate_pose(
                     g.position, g.orientation, g.linear, g.angular, duration - m.opt.timestep
                 )[1]
-            torque = np.empty(3)
-            mujoco.mju_rotVecQuat(torque, qf[3:6], q_last)
+            force, torque = free_joint_wrench(d, self._gripper_dof[arm], q_last)
             self._wrench[arm] = (force, torque)
             fn = float(np.sqrt(force @ force))
             if fn > self._max_force:
