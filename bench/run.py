@@ -113,7 +113,8 @@ def control_benchmarks(n: int) -> dict[str, Any]:
             length = float(np.linalg.norm(p[j] - estimate))
             est.update(float(np.linalg.norm(f[j])), length)
             current = DualPose(Pose(p[j], q), right)
-            controller(current, current, (4.0, None), (f[j], None), est.k_hat, (estimate - p[j], None))
+            directions = (estimate - p[j], None)
+            controller(current, current, (4.0, None), (f[j], None), est.k_hat, directions)
 
         return run
 

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import click
 
+from tautwire.cli.demo import demo
 from tautwire.cli.estimate import estimate
 from tautwire.cli.validate import validate
 
-ALL: list[click.Command] = [validate, estimate]
+ALL: list[click.Command] = [demo, validate, estimate]

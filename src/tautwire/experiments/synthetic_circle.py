@@ -15,6 +15,8 @@ CONTACT = np.array([0.5, 0.1, 0.2])
 
 
 class CircleData(NamedTuple):
+    """Gripper positions [m], measured forces [N] and true contacts [m], one row a sample."""
+
     p_gripper: FloatArray  # (N, 3)
     f_sens: FloatArray  # (N, 3)
     contact: FloatArray  # (N, 3) true contact of each sample

@@ -1,0 +1,1 @@
+"""Plots (matplotlib, headless Agg backend) and video of tautwire runs."""

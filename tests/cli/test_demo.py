@@ -1,0 +1,26 @@
+import json
+from pathlib import Path
+
+import pytest
+
+from tautwire.cli.main import main
+
+
+def test_demo_json_and_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["demo", "--json", "--out", str(tmp_path), "--seed", "1"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    c = result["contact"]
+    assert c["error_half_circle"] <= 0.0015
+    assert c["error_full_circle"] <= 0.0010
+    assert c["change_declared_after"] is not None and c["change_declared_after"] <= 5
+    assert c["samples_to_2mm_after_change"] is not None and c["samples_to_2mm_after_change"] <= 30
+    for case in result["stiffness"]:
+        assert abs(case["relative_error"]) <= 0.05
+    assert (tmp_path / "contact_estimation.png").stat().st_size > 10_000
+    assert json.loads((tmp_path / "result.json").read_text()) == result
+
+
+def test_demo_table(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["demo", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "error after half a circle" in out and "k_hat" in out
