@@ -79,5 +79,5 @@ def peg_scene(**options: object) -> SimWorld:
 def rest(world: SimWorld, seconds: float) -> None:
     """Step ``world`` with the grippers still."""
     world.set_twist(np.zeros(12))
-    for _ in range(int(round(seconds / world.control_period))):
+    for _ in range(round(seconds / world.control_period)):
         world.step()

@@ -75,8 +75,19 @@ class SceneModel:
 
 
 def _gripper_xml(arm: Arm, world: WorldSpec, options: SimOptions) -> str:
+    """A floating parallel gripper; its pads have lips that keep the cable in the channel.
+
+    Each pad carries a thin lip along its top and bottom edge that protrudes
+    towards the other finger by 0.7 cable radii, so that a cable sliding
+    through the closed fingers cannot be pulled out of them vertically by a
+    hanging tail (on flat pads Coulomb friction lets it drift out: while the
+    cable slips along the pads, any sideways load makes it slip sideways too).
+    """
     g = world.gripper(arm)
     px, ty, pz = PAD_HALF
+    radius = max((c.radius for c in world.cables), default=0.0025)
+    depth = 0.7 * radius
+    lip_h = 5e-4
     half_open = 0.5 * options.max_opening
     colour = "0.20 0.35 0.75 1" if arm == "left" else "0.75 0.30 0.20 1"
     fingers = []
@@ -91,7 +102,15 @@ def _gripper_xml(arm: Arm, world: WorldSpec, options: SimOptions) -> str:
             f' contype="{_PAD}" conaffinity="{_CABLE}" condim="3"'
             f' friction="{options.pad_friction} 0.005 0.0001"'
             f' {_STIFF_CONTACT} rgba="0.15 0.15 0.15 1"/>'
-            f'<geom type="box" pos="0 {sign * 0.5 * ty:.6g} 0.026" size="{px} {0.5 * ty:.6g} 0.018"'
+            + "".join(
+                f'<geom name="{arm}_lip_{side}{k}" type="box"'
+                f' pos="0 {-sign * (ty + 0.5 * depth):.6g} {zsign * (pz - lip_h):.6g}"'
+                f' size="{px} {0.5 * depth:.6g} {lip_h:.6g}" contype="{_PAD}"'
+                f' conaffinity="{_CABLE}" condim="3" friction="{options.pad_friction} 0.005 0.0001"'
+                f' {_STIFF_CONTACT} rgba="0.15 0.15 0.15 1"/>'
+                for k, zsign in (("_top", 1.0), ("_bottom", -1.0))
+            )
+            + f'<geom type="box" pos="0 {sign * 0.5 * ty:.6g} 0.026" size="{px} {0.5 * ty:.6g} 0.018"'
             f' contype="0" conaffinity="0" rgba="{colour}"/>'
             "</body>"
         )
