@@ -1,0 +1,139 @@
+"""SimWorld: stepping, grasping, friction sliding, the sensor computation, guards."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tautwire.errors import SimulationError
+from tautwire.robot import GripperCommand
+from tautwire.sim import SimulationDiverged
+from tautwire.sim.transmitted_wrench import explicit_wrench
+from tests.sim.scenes import anchor_and_gripper, peg_scene, rest
+
+MU_PAD = 0.5  # SimOptions.pad_friction default
+
+
+def _slide(world, grip: float, speed: float, seconds: float, window: float) -> np.ndarray:
+    world.set_gripper("left", GripperCommand("grip_force", grip))
+    twist = np.zeros(12)
+    twist[0] = speed
+    world.set_twist(twist)
+    forces = []
+    steps = round(seconds / world.control_period)
+    for k in range(steps):
+        world.step()
+        if k >= steps - round(window / world.control_period):
+            forces.append(world.wrench("left")[0])
+    return np.array(forces)
+
+
+@pytest.mark.parametrize("grip", [1.0, 4.0])
+def test_sliding_friction_through_gripper_is_two_mu_grip(grip: float) -> None:
+    # The gripper squeezes the cable with two pads and pulls away from the
+    # anchor along it: once the cable slides, the pull is 2 mu F_grip.
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.32, 0.0, 0.3], 0.4, 1000.0, held_at=0.32)
+    rest(world, 0.2)
+    start = world.held("left")
+    forces = _slide(world, grip, 0.01, 3.0, 1.0)
+    assert world.held("left") is None and start is not None
+    assert -forces[:, 0].mean() == pytest.approx(2.0 * MU_PAD * grip, rel=0.10)
+
+
+def test_free_joint_wrench_equals_sum_of_equality_and_contact_forces() -> None:
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.4, 1000.0, held_at=0.2)
+    rest(world, 0.1)
+    hold_ids = np.concatenate(list(world._cables["W"].hold_ids.values()))
+
+    def explicit() -> tuple[np.ndarray, np.ndarray]:
+        p, q = world.gripper_pose("left")
+        return explicit_wrench(
+            world._model, world._data, world._gripper_bodies["left"], hold_ids, p, q
+        )
+
+    # held: the connect equality carries the force
+    force, torque = world.wrench("left")
+    f2, t2 = explicit()
+    assert np.linalg.norm(force) > 0.01
+    assert np.allclose(force, f2, atol=1e-9) and np.allclose(torque, t2, atol=1e-9)
+    # squeezed: only contacts (pads and lips) carry it
+    world.set_gripper("left", GripperCommand("grip_force", 3.0))
+    twist = np.zeros(12)
+    twist[3:6] = [0.0, 0.0, 0.5]  # turn about z so contact torques are not trivial
+    world.set_twist(twist)
+    for _ in range(50):
+        world.step(1)
+        world.set_twist(np.zeros(12))
+    world.step(1)
+    force, torque = world.wrench("left")
+    f2, t2 = explicit()
+    assert world._data.ncon > 0 and np.linalg.norm(force) > 0.1
+    assert np.allclose(force, f2, atol=1e-8) and np.allclose(torque, t2, atol=1e-8)
+
+
+def test_hold_grasps_the_nearest_vertex_without_a_jump_and_open_releases() -> None:
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.4, 100.0, held_at=0.2)
+    rest(world, 0.1)
+    assert world.held("left") == ("W", 10)
+    world.set_gripper("left", GripperCommand("open"))
+    rest(world, 0.02)
+    assert world.held("left") is None
+    # grasp again: the vertex nearest to the tool centre point, where it is
+    world.set_gripper("left", GripperCommand("hold"))
+    held = world.held("left")
+    assert held is not None
+    before = world._data.xpos[world._cables["W"].body_ids[held[1]]].copy()
+    world.step()
+    after = world._data.xpos[world._cables["W"].body_ids[held[1]]]
+    assert np.linalg.norm(after - before) < 2e-4
+    assert world.gripper_grip_force("left") == world.options.hold_grip_force
+    # open and let the cable fall away: the gripper feels nothing
+    world.set_gripper("left", GripperCommand("open"))
+    rest(world, 0.3)
+    assert world.held("left") is None and world.gripper_grip_force("left") == 0.0
+    assert world.gripper_opening("left") == pytest.approx(world.options.max_opening, abs=1e-3)
+    assert np.linalg.norm(world.wrench("left")[0]) < 1e-9
+
+
+def test_time_starts_after_settling_and_advances_by_control_periods() -> None:
+    world = peg_scene()
+    assert world.time == 0.0
+    world.step()
+    assert world.time == pytest.approx(world.control_period)
+    assert world.substeps == 4
+
+
+def test_max_force_tracks_and_resets() -> None:
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.2, 100.0)
+    rest(world, 0.05)
+    world.reset_max_force()
+    twist = np.zeros(12)
+    twist[0] = 0.05  # stretch by 2 cm -> about 2 N
+    world.set_twist(twist)
+    for _ in range(100):
+        world.step()
+    peak = world.max_force
+    assert peak >= np.linalg.norm(world.wrench("left")[0]) > 1.5
+    world.reset_max_force()
+    assert world.max_force == 0.0
+
+
+def test_nan_in_state_raises_diverged() -> None:
+    world = peg_scene()
+    world._data.qvel[world._cable_dofs[5]] = np.nan
+    with pytest.raises(SimulationDiverged) as info:
+        world.step()
+    assert info.value.cause == "diverged"
+    assert isinstance(info.value, SimulationError)
+
+
+def test_velocity_blow_up_raises_diverged() -> None:
+    world = peg_scene()
+    world._data.qvel[world._cable_dofs[5]] = 10.0 * world.options.max_speed
+    with pytest.raises(SimulationDiverged, match="diverged"):
+        world.step()
+
+
+def test_timestep_must_divide_control_period() -> None:
+    with pytest.raises(SimulationError, match="divide"):
+        peg_scene(timestep=0.0015)
