@@ -7,7 +7,7 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import orientation_along
-from tautwire.model.tension import G, GRAVITY
+from tautwire.model.tension import GRAVITY, G
 from tautwire.sim import CableSpec, GripperSpec, HoldSpec, SimWorld, WorldSpec
 from tautwire.sim.ft_sensor import FTSensor
 from tautwire.sim.ground_truth import GroundTruth

@@ -110,7 +110,8 @@ def _gripper_xml(arm: Arm, world: WorldSpec, options: SimOptions) -> str:
                 f' {_STIFF_CONTACT} rgba="0.15 0.15 0.15 1"/>'
                 for k, zsign in (("_top", 1.0), ("_bottom", -1.0))
             )
-            + f'<geom type="box" pos="0 {sign * 0.5 * ty:.6g} 0.026" size="{px} {0.5 * ty:.6g} 0.018"'
+            + f'<geom type="box" pos="0 {sign * 0.5 * ty:.6g} 0.026"'
+            f' size="{px} {0.5 * ty:.6g} 0.018"'
             f' contype="0" conaffinity="0" rgba="{colour}"/>'
             "</body>"
         )
