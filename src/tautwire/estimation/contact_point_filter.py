@@ -102,6 +102,9 @@ class ContactPointFilter:
             that triggers the first estimate.
         init_max_samples: Most samples kept in the buffer before the first
             estimate (oldest dropped).
+        init_max_std: The first estimate is taken only once the batch fit's
+            largest std [m] is below this (noise alone can spread the force
+            directions of a nearly slack cable).
         detector: Contact change detector; None for the default one.
         detect_changes: False disables change detection (no gating).
         x0: Optional prior mean [m]: start running at once from (x0, P0).  # (3,)
@@ -119,6 +122,7 @@ class ContactPointFilter:
         min_tension: float = 0.1,
         init_spread: float = DEFAULT_INIT_SPREAD,
         init_max_samples: int = 250,
+        init_max_std: float = 0.02,
         detector: ContactChangeDetector | None = None,
         detect_changes: bool = True,
         x0: ArrayLike | None = None,
@@ -153,6 +157,9 @@ class ContactPointFilter:
         self.min_distance = float(min_distance)
         self.min_tension = float(min_tension)
         self.init_spread = float(init_spread)
+        if not (init_max_std > 0.0 and math.isfinite(init_max_std)):
+            raise InvalidArgumentError(f"init_max_std must be > 0 m, got {init_max_std}")
+        self.init_max_std = float(init_max_std)
         self.detector = detector if detector is not None else ContactChangeDetector()
         self.detect_changes = bool(detect_changes)
         self.x: FloatArray = np.zeros(3)  # (3,)
@@ -260,6 +267,8 @@ class ContactPointFilter:
         p = np.array([s[0] for s in self._buffer])
         f = np.array([s[1] for s in self._buffer])
         res = self.batch(p, f)
+        if float(np.max(np.diag(res.covariance))) > self.init_max_std**2:
+            return False  # the spread is noise (e.g. a nearly slack cable): wait
         self.x = res.estimate.copy()
         self.P = res.covariance.copy()
         self.running = True

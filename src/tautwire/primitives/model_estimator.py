@@ -1,0 +1,236 @@
+"""The online model estimation loop that every primitive runs.
+
+Each control period it takes one :class:`~tautwire.robot.Observation` and
+(paper section "Model Estimation"):
+
+1. computes the weight-compensated tension of the edge leaving the sensing
+   gripper (equ:edge_tension), towards the contact it is taut against;
+2. feeds the contact point filter (equ:kalmanUpdate) every
+   ``estimation_period`` with the mean gripper position and force of the
+   period; on a declared contact change, a new contact feature point is added
+   to the path graph between the old contact and the gripper;
+3. updates the elasticity estimate (equ:spring_measurement) while the cable
+   is taut;
+4. maps the constraints (gripper poses, estimated contacts, fixed points)
+   onto the path graph (sec:constraintmapping).
+
+It sees only observations: no ground truth.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
+from tautwire.model import PathGraph
+from tautwire.model.tension import G as GRAVITY_ABS
+from tautwire.robot import Arm, Observation
+
+FloatArray = NDArray[np.float64]
+
+
+@dataclass
+class TensionState:
+    """What the latest observation says about the sensing gripper's edge.
+
+    Attributes:
+        tension: Weight-compensated tension f_c [N] (>= 0).
+        direction: Unit vector from the gripper towards the contact it is taut
+            against: the compensated force's direction when the cable is
+            taut, else the model's direction.  # (3,)
+        force: Weight-compensated force vector [N].  # (3,)
+        raw_force: The measured force [N].  # (3,)
+        contact: Current contact estimate (or the model's prior) [m].  # (3,)
+        span: Distance [m] from the gripper to ``contact``.
+        taut: Whether the tension exceeds the taut threshold.
+    """
+
+    tension: float
+    direction: FloatArray
+    force: FloatArray
+    raw_force: FloatArray
+    contact: FloatArray
+    span: float
+    taut: bool
+
+
+class ModelEstimator:
+    """Keeps the path graph and the estimators up to date from observations.
+
+    Args:
+        graph: The path graph of the held cable (the robot's prior: the board
+            design's nominal fixture positions, the held arc length).
+        arm: The gripper that holds the cable and carries the FT sensor.
+        contact_filter: Filter of the contact the gripper's edge is taut against.
+        elasticity: Stiffness estimator of that edge.
+        estimation_period: Period [s] of the contact filter's iterations; the
+            force and position are averaged over it (0: every observation).
+        taut_tension: Tension [N] above which the cable counts as taut.
+        trusted_std: Largest std [m] of a contact estimate that is used.
+    """
+
+    def __init__(
+        self,
+        graph: PathGraph,
+        arm: Arm,
+        contact_filter: ContactPointFilter,
+        elasticity: ElasticityEstimator,
+        estimation_period: float = 0.0,
+        taut_tension: float = 0.3,
+        trusted_std: float = 0.01,
+    ) -> None:
+        if graph.index_of("gripper", arm) is None:
+            raise InvalidArgumentError(f"the path graph has no point held by the {arm} gripper")
+        if estimation_period < 0.0 or not math.isfinite(estimation_period):
+            raise InvalidArgumentError(f"estimation_period must be >= 0 s, got {estimation_period}")
+        self.graph = graph
+        self.arm: Arm = arm
+        self.contact_filter = contact_filter
+        self.elasticity = elasticity
+        self.estimation_period = float(estimation_period)
+        self.taut_tension = float(taut_tension)
+        self.trusted_std = float(trusted_std)
+        self.iterations = 0  # contact filter iterations so far
+        self.changes: list[int] = []  # iterations at which a new contact was declared
+        self._sum_p = np.zeros(3)
+        self._sum_f = np.zeros(3)
+        self._n = 0
+        self._window_start: float | None = None
+        self.state: TensionState | None = None
+
+    # ----------------------------------------------------------------- graph
+    @property
+    def gripper_index(self) -> int:
+        """Index of the sensing gripper's feature point."""
+        i = self.graph.index_of("gripper", self.arm)
+        assert i is not None  # checked in the constructor; points are never relabelled
+        return i
+
+    @property
+    def contact_index(self) -> int | None:
+        """Index of the constrained point the gripper's edge is taut against.
+
+        The nearest constrained point before the gripper along the cable, or
+        after it when nothing constrains the cable before.
+        """
+        g = self.gripper_index
+        for i in range(g - 1, -1, -1):
+            if self.graph.points[i].is_constrained:
+                return i
+        for i in range(g + 1, len(self.graph)):
+            if self.graph.points[i].is_constrained:
+                return i
+        return None
+
+    def contact_position(self) -> FloatArray | None:
+        """Best knowledge of the contact position [m].
+
+        The filter's estimate once its largest std is below
+        ``trusted_std``, else the model's point (the board design's prior).
+        """
+        estimate = self.contact_filter.estimate
+        if estimate is not None and float(np.max(np.diag(self.contact_filter.P))) <= (
+            self.trusted_std**2
+        ):
+            return estimate
+        i = self.contact_index
+        return None if i is None else self.graph.points[i].position.copy()
+
+    # ------------------------------------------------------------------ loop
+    def update(self, obs: Observation) -> TensionState:
+        """Process one observation; return the tension state of the gripper's edge."""
+        p_g = obs.gripper(self.arm).position
+        f_raw = obs.wrench(self.arm).force
+        contact = self.contact_position()
+        if contact is None:
+            contact = p_g + np.array([0.0, 0.0, -1.0])
+        chord = contact - p_g
+        span = float(np.linalg.norm(chord))
+        rho = self.graph.mass_per_length
+        f = f_raw.copy()
+        f[2] += 0.5 * rho * span * GRAVITY_ABS  # f - m_g g, m_g = rho d / 2 (equ:edge_tension)
+        fn = float(np.linalg.norm(f))
+        taut = fn >= self.taut_tension
+        if taut:
+            direction = f / fn
+        elif span > 1e-9:
+            direction = chord / span
+        else:
+            direction = np.array([0.0, 0.0, -1.0])
+        tension = max(float(f @ direction), 0.0)
+        c = self.contact_index
+        if c is not None:
+            # the cable length to the contact sets the filter's noise scale
+            # (never the distance to its own estimate, which can collapse)
+            s = self.graph.arc_lengths()
+            self.contact_filter.edge_length = max(abs(s[self.gripper_index] - s[c]), 1e-3)
+        self._accumulate(obs.time, p_g, f_raw)
+        if taut:
+            # the length's changes are the gripper's motion along the cable,
+            # whatever error the contact position still has
+            self.elasticity.update(tension, span)
+        self._update_graph(p_g, obs)
+        self.state = TensionState(tension, direction, f, f_raw, contact, span, taut)
+        return self.state
+
+    def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray) -> None:
+        if self._window_start is None:
+            self._window_start = time
+        self._sum_p += p_g
+        self._sum_f += f_raw
+        self._n += 1
+        if time - self._window_start + 1e-9 < self.estimation_period:
+            return
+        p_mean, f_mean = self._sum_p / self._n, self._sum_f / self._n
+        self._sum_p[:] = 0.0
+        self._sum_f[:] = 0.0
+        self._n = 0
+        self._window_start = None
+        result = self.contact_filter.update(p_mean, f_mean)
+        self.iterations += 1
+        if result.changed and result.estimate is not None:
+            self.changes.append(self.iterations - 1)
+            self._add_contact(result.estimate, p_mean)
+
+    def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> None:
+        """A new contact between the old one and the gripper: add its feature point."""
+        g = self.gripper_index
+        c = self.contact_index
+        s = self.graph.arc_lengths()
+        distance = float(np.linalg.norm(p_g - estimate))
+        if c is None or c > g:
+            return
+        s_new = min(max(s[g] - distance, s[c] + 1e-3), s[g] - 1e-3)
+        if s_new <= s[c]:
+            return
+        i = self.graph.insert_at_arc_length(s_new, kind="contact", label="estimated")
+        self.graph.points[i].kind = "contact"
+        self.graph.points[i].position = estimate.copy()
+
+    def _update_graph(self, p_g: FloatArray, obs: Observation) -> None:
+        constraints: dict[int, FloatArray] = {}
+        for i, pt in enumerate(self.graph.points):
+            if pt.kind == "gripper":
+                constraints[i] = obs.gripper("left" if pt.label == "left" else "right").position
+            elif pt.kind in ("fixed", "contact"):
+                constraints[i] = pt.position
+        estimate = self.contact_filter.estimate
+        c = self.contact_index
+        if estimate is not None and c is not None:
+            constraints[c] = estimate
+            self.graph.points[c].covariance = self.contact_filter.P.copy()
+        update_by_constraints(self.graph, constraints)
+        for pt in self.graph.points:
+            if pt.kind == "gripper":
+                pt.orientation = obs.gripper("left" if pt.label == "left" else "right").orientation
+        if self.state is not None and c is not None:
+            edge = self.graph.edges[
+                self.gripper_index - 1 if c < self.gripper_index else self.gripper_index
+            ]
+            edge.tension = self.state.tension
+            edge.stiffness = self.elasticity.k_hat

@@ -1,0 +1,31 @@
+"""Every primitive registered by name and by letter."""
+
+from __future__ import annotations
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.rotate_around_feature_point import RotateAroundFeaturePoint
+from tautwire.primitives.single_arm_tension import SingleArmTension
+
+#: Primitive classes by name.
+PRIMITIVES: dict[str, type[Primitive]] = {
+    cls.name: cls for cls in (SingleArmTension, RotateAroundFeaturePoint)
+}
+
+
+def primitive_class(name_or_letter: str) -> type[Primitive]:
+    """The primitive class named ``name_or_letter`` (a name or a letter A-I)."""
+    for cls in PRIMITIVES.values():
+        if name_or_letter in (cls.name, cls.letter):
+            return cls
+    valid = ", ".join(f"{c.name} ({c.letter})" for c in PRIMITIVES.values())
+    raise InvalidArgumentError(f"no primitive {name_or_letter!r} is implemented; valid: {valid}")
+
+
+def make_primitive(name_or_letter: str, **params: object) -> Primitive:
+    """Build a primitive from its scenario parameters."""
+    cls = primitive_class(name_or_letter)
+    try:
+        return cls(**params)  # type: ignore[arg-type]
+    except TypeError as exc:
+        raise InvalidArgumentError(f"{cls.name}: {exc}") from exc

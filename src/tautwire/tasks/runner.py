@@ -1,0 +1,123 @@
+"""Run a primitive on any :class:`~tautwire.robot.Robot` until it ends.
+
+The runner enforces what no primitive may forget: the force limit (a
+measured force above it ends the step with cause ``force_limit``), the
+primitive's timeout, and a clean end with cause ``diverged`` or ``error``
+when the robot (e.g. the simulated world) fails.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from tautwire.errors import TautwireError
+from tautwire.primitives import Outcome, Primitive, PrimitiveContext
+from tautwire.robot import Command, Observation, Robot
+
+
+@dataclass(frozen=True)
+class StepReport:
+    """How one primitive ended (the ``steps`` entries of a run's result).
+
+    Attributes:
+        primitive: The primitive's name.
+        letter: Its letter A-I.
+        outcome: ``success`` or ``failure``.
+        cause: Why it failed (None on success).
+        detail: A sentence for the reader.
+        sim_time: Duration [s] of the step (robot time).
+        max_force: Largest measured force magnitude [N] during the step.
+    """
+
+    primitive: str
+    letter: str
+    outcome: str
+    cause: str | None
+    detail: str
+    sim_time: float
+    max_force: float
+
+    @property
+    def success(self) -> bool:
+        """Whether the step succeeded."""
+        return self.outcome == "success"
+
+
+@dataclass(frozen=True)
+class TickRecord:
+    """What a tick callback receives: the observation and the command sent."""
+
+    observation: Observation
+    command: Command
+    primitive: Primitive
+    context: PrimitiveContext
+
+
+def _max_measured_force(obs: Observation) -> float:
+    best = 0.0
+    for w in obs.wrenches:
+        fx, fy, fz = (float(v) for v in w.force)
+        best = max(best, math.sqrt(fx * fx + fy * fy + fz * fz))
+    return best
+
+
+def run_step(
+    robot: Robot,
+    primitive: Primitive,
+    ctx: PrimitiveContext,
+    on_tick: Callable[[TickRecord], None] | None = None,
+    force_limit: float | None = None,
+) -> StepReport:
+    """Run ``primitive`` on ``robot`` until it succeeds or fails.
+
+    Args:
+        robot: The robot (simulated or real).
+        primitive: A fresh primitive.
+        ctx: The shared context (model, estimators, controller).
+        on_tick: Called after every control period (recording, plotting).
+        force_limit: Force limit [N]; default ``ctx.limits.max_force``.
+
+    Returns:
+        The step's report. Exceptions of the robot end the step as a
+        failure (``diverged`` when the exception says so, else ``error``).
+    """
+    limit = ctx.limits.max_force if force_limit is None else force_limit
+    max_force = 0.0
+    obs = robot.observe()
+    t0 = obs.time
+    outcome: Outcome
+    try:
+        primitive.start(obs, ctx)
+        while True:
+            force = _max_measured_force(obs)
+            max_force = max(max_force, force)
+            if force > limit:
+                outcome = Outcome.failure(
+                    "force_limit", f"measured {force:.2f} N, above the limit of {limit:g} N"
+                )
+                break
+            command = primitive.step(obs)
+            if primitive.outcome.done:
+                outcome = primitive.outcome
+                break
+            robot.act(command)
+            if on_tick is not None:
+                on_tick(TickRecord(obs, command, primitive, ctx))
+            obs = robot.observe()
+    except TautwireError as exc:
+        cause = getattr(exc, "cause", None) or "error"
+        outcome = Outcome.failure(str(cause), f"{type(exc).__name__}: {exc}")
+    except (FloatingPointError, ValueError, ArithmeticError) as exc:
+        outcome = Outcome.failure("error", f"{type(exc).__name__}: {exc}")
+    end = robot.observe().time if outcome.cause not in ("diverged", "error") else obs.time
+    return StepReport(
+        primitive.name,
+        primitive.letter,
+        outcome.status,
+        outcome.cause,
+        outcome.detail,
+        end - t0,
+        max_force,
+    )

@@ -1,0 +1,57 @@
+import numpy as np
+import pytest
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.primitives import SingleArmTension
+from tautwire.tasks import run_step
+from tests.primitives.conftest import CONTACT, GRIPPER, context
+from tests.primitives.spring_robot import SpringCableRobot
+
+
+@pytest.mark.parametrize("k", [10.0, 100.0, 1000.0])
+@pytest.mark.parametrize("guess", [0.1, 10.0])
+def test_tensions_with_a_stiffness_guess_off_by_ten(k: float, guess: float) -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, k, slack=0.01, seed=int(k))
+    ctx = context(k_initial=k * guess)
+    report = run_step(robot, SingleArmTension("left", 3.0), ctx)
+    assert report.success, report
+    assert robot.tension() == pytest.approx(3.0, abs=0.35)
+    assert report.max_force < 15.0 and robot.true_max_force < 15.0
+    assert ctx.tension == 3.0
+
+
+def test_learns_the_stiffness_while_tensioning() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, slack=0.0, seed=4)
+    ctx = context(k_initial=20.0)
+    report = run_step(robot, SingleArmTension("left", 3.0, duration=3.0), ctx)
+    assert report.success
+    assert ctx.estimator.elasticity.k_hat == pytest.approx(200.0, rel=0.2)
+
+
+def test_no_contact_when_nothing_holds_the_cable() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 100.0, slack=10.0, seed=1)  # never taut
+    report = run_step(robot, SingleArmTension("left", 3.0), context())
+    assert report.outcome == "failure" and report.cause == "no_contact"
+
+
+def test_force_limit_ends_the_step() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 1000.0, slack=0.0, seed=2)
+    report = run_step(robot, SingleArmTension("left", 20.0), context(), force_limit=15.0)
+    assert report.cause == "force_limit" and report.max_force > 15.0
+
+
+def test_arguments_are_checked() -> None:
+    with pytest.raises(InvalidArgumentError):
+        SingleArmTension("middle", 3.0)  # type: ignore[arg-type]
+    with pytest.raises(InvalidArgumentError):
+        SingleArmTension("left", -1.0)
+
+
+def test_deterministic() -> None:
+    reports = []
+    for _ in range(2):
+        robot = SpringCableRobot(CONTACT, GRIPPER, 100.0, slack=0.01, seed=7)
+        reports.append(run_step(robot, SingleArmTension("left", 3.0), context()))
+        reports.append(robot.p.copy())
+    assert reports[0] == reports[2]
+    assert np.array_equal(reports[1], reports[3])
