@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 from tautwire.errors import SimulationError
 from tautwire.sim.options import SimOptions
 from tautwire.sim.spec import CableSpec
-from tautwire.sim.wave_speed import max_stable_timestep, required_mass_scaling
+from tautwire.sim.wave_speed import vertex_mass_scaling, vertex_timestep_limit
 
 FloatArray = NDArray[np.float64]
 
@@ -28,9 +28,9 @@ class CableDiscretization:
             segment).  # (N + 1,)
         segment_stiffness: Spring constant [N/m] of each segment,
             k L / l_e, so that the segments in series give k.  # (N,)
-        mass_scaling: alpha; each vertex body carries alpha times its true
-            mass and gravcomp 1 - 1/alpha.
-        max_timestep: The wave-speed limit [s] with this alpha and the force
+        mass_scaling: alpha_i; each vertex body carries alpha_i times its
+            true mass and gravcomp 1 - 1/alpha_i, so its weight is exact.  # (N + 1,)
+        max_timestep: The wave-speed limit [s] with these alpha_i at the force
             limit (before the safety factor).
     """
 
@@ -38,7 +38,7 @@ class CableDiscretization:
     rest_lengths: FloatArray
     masses: FloatArray
     segment_stiffness: FloatArray
-    mass_scaling: float
+    mass_scaling: FloatArray
     max_timestep: float
 
     @property
@@ -56,10 +56,13 @@ def discretize_cable(
 ) -> CableDiscretization:
     """Place vertices on ``cable`` and apply the wave-speed guard.
 
-    A vertex sits exactly at every held arc length. A free-end piece shorter
+    A vertex sits exactly at every held arc length, and one ``pad_exit`` to
+    either side of it (just beyond the finger pads, so that the held segment
+    starts out along the gripper's channel). A free-end piece shorter
     than a quarter of the target segment length is merged into its
-    neighbouring vertex (its mass is kept). The vertex mass scaling alpha is
-    the smallest that satisfies the wave-speed limit at the force limit.
+    neighbouring vertex (its mass is kept). Each vertex's mass scaling
+    alpha_i is the smallest that satisfies the wave-speed limit at the force
+    limit (:func:`tautwire.sim.wave_speed.vertex_mass_scaling`).
 
     Args:
         cable: The cable.
@@ -75,7 +78,14 @@ def discretize_cable(
         target = length / options.segments
     else:
         target = min(options.segment_length, length / options.min_segments)
-    breaks = sorted({0.0, length, *(h.at for h in cable.holds)})
+    guide = options.pad_exit
+    exits = [
+        a
+        for h in cable.holds
+        for a in (h.at - guide, h.at + guide)
+        if 0.25 * target < a < length - 0.25 * target
+    ]
+    breaks = sorted({0.0, length, *(h.at for h in cable.holds), *exits})
     arcs: list[float] = [0.0]
     for a, b in itertools.pairwise(breaks):
         n = max(1, math.ceil((b - a) / target - 1e-9))
@@ -99,18 +109,19 @@ def discretize_cable(
     masses[-1] += (tail_end - arc[-1]) * cable.mass_per_length
     masses[0] += (arc[0] - head_start) * cable.mass_per_length
     stiffness = cable.stiffness * length / rest
-    l_min = float(rest.min())
-    alpha = required_mass_scaling(
-        options.timestep, l_min, cable.mass_per_length, force_limit, options.wave_speed_safety
+    alpha = vertex_mass_scaling(
+        options.timestep, rest, masses, force_limit, options.wave_speed_safety
     )
-    if alpha > options.max_mass_scaling:
+    worst = int(np.argmax(alpha))
+    if alpha[worst] > options.max_mass_scaling:
+        l_min = float(rest[max(worst - 1, 0) : worst + 1].min())
         raise SimulationError(
             f"cable {cable.name}: the wave-speed limit dt < l sqrt(rho / T) fails for"
-            f" dt = {options.timestep} s, shortest segment l = {l_min:.4f} m,"
+            f" dt = {options.timestep} s, segment l = {l_min:.4f} m,"
             f" rho = {cable.mass_per_length} kg/m, T = force limit {force_limit} N;"
-            f" it needs mass scaling {alpha:.1f} > max_mass_scaling {options.max_mass_scaling}."
-            " Use a smaller timestep, longer segments, a lower force limit or hold points"
-            " further apart"
+            f" it needs mass scaling {alpha[worst]:.1f} > max_mass_scaling"
+            f" {options.max_mass_scaling}. Use a smaller timestep, longer segments, a lower"
+            " force limit or hold points further apart"
         )
     return CableDiscretization(
         arc=arc,
@@ -118,5 +129,5 @@ def discretize_cable(
         masses=masses,
         segment_stiffness=stiffness,
         mass_scaling=alpha,
-        max_timestep=max_stable_timestep(l_min, cable.mass_per_length, force_limit, alpha),
+        max_timestep=vertex_timestep_limit(rest, alpha * masses, force_limit),
     )

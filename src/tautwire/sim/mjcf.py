@@ -245,7 +245,7 @@ def scene_model(world: WorldSpec, options: SimOptions) -> SceneModel:
         disc = discretize_cable(cable, world.force_limit, options)
         discs[cable.name] = disc
         verts[cable.name] = initial_vertices(
-            world, cable, disc, options.clip_length, options.table_height
+            world, cable, disc, options.clip_length, options.table_height, options.pad_exit
         )
         if cable.start is not None:
             anchored.add(cable.name)
@@ -280,12 +280,13 @@ def scene_model(world: WorldSpec, options: SimOptions) -> SceneModel:
     for cable in world.cables:
         disc = discs[cable.name]
         x = verts[cable.name]
-        alpha = disc.mass_scaling
-        gravcomp = 1.0 - 1.0 / alpha
-        for i, (p, m) in enumerate(zip(x, disc.masses, strict=True)):
+        for i, (p, m, alpha) in enumerate(zip(x, disc.masses, disc.mass_scaling, strict=True)):
+            gravcomp = 1.0 - 1.0 / alpha
             name = vertex_body(cable.name, i)
             if i == 0 and cable.name in anchored:
-                body.append(f'<body name="{name}" pos="{_v(p)}"><site name="{name}"/></body>')
+                body.append(
+                    f'<body name="{name}" pos="{_v(p)}"><site name="{name}" group="4"/></body>'
+                )
                 continue
             scaled = alpha * m
             joints = "".join(
@@ -295,7 +296,7 @@ def scene_model(world: WorldSpec, options: SimOptions) -> SceneModel:
             body.append(
                 f'<body name="{name}" pos="{_v(p)}" gravcomp="{gravcomp:.9g}">{joints}'
                 f'<inertial pos="0 0 0" mass="{scaled:.9g}" diaginertia="1e-9 1e-9 1e-9"/>'
-                f'<site name="{name}"/></body>'
+                f'<site name="{name}" group="4"/></body>'
             )
         n = disc.segments
         names = " ".join(vertex_body(cable.name, i) for i in range(n + 1))

@@ -42,6 +42,9 @@ class SimOptions:
             held closed around the cable without squeezing it, so the cable
             pivots at the grasp point as in the paper's point model.
         hold_clearance: Gap [m] between each finger pad and the held cable.
+        pad_exit: Arc distance [m] from a held point to the vertices on
+            either side of it; more than the pads' half length (0.01 m), so
+            that the initial cable runs straight through the closed fingers.
         open_force: Force [N] that opens the fingers in mode "open".
         max_opening: Largest distance between the finger pads [m].
         grasp_distance: Largest distance [m] from the tool centre point to a
@@ -69,12 +72,13 @@ class SimOptions:
     table_friction: float = 0.3
     hold_grip_force: float = 10.0
     hold_clearance: float = 2e-4
+    pad_exit: float = 0.012
     open_force: float = 5.0
     max_opening: float = 0.04
     grasp_distance: float = 0.012
     table_height: float = 0.0
-    settle_time: float = 2.0
-    settle_damping_time: float = 0.02
+    settle_time: float = 3.0
+    settle_damping_time: float = 0.1
     settle_speed: float = 1e-3
     max_speed: float = 100.0
     clip_length: float = 0.012
@@ -105,6 +109,10 @@ class SimOptions:
         if not 0.0 < self.wave_speed_safety <= 1.0:
             raise InvalidArgumentError(
                 f"wave_speed_safety must be in (0, 1], got {self.wave_speed_safety}"
+            )
+        if self.pad_exit <= 0.01:
+            raise InvalidArgumentError(
+                f"pad_exit must exceed the pads' half length 0.01 m, got {self.pad_exit}"
             )
         if self.max_mass_scaling < 1.0:
             raise InvalidArgumentError(

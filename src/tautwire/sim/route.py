@@ -17,7 +17,7 @@ from numpy.typing import NDArray
 from tautwire.errors import SimulationError
 from tautwire.model.quaternion import rotate
 from tautwire.sim.discretization import CableDiscretization
-from tautwire.sim.spec import CableSpec, ClipSpec, PegSpec, WorldSpec
+from tautwire.sim.spec import CableSpec, ClipSpec, HoldSpec, PegSpec, WorldSpec
 
 FloatArray = NDArray[np.float64]
 
@@ -97,6 +97,36 @@ def _clip_pass(clip: ClipSpec, before: FloatArray | None, length: float) -> list
     return ends
 
 
+def _through_gripper(
+    world: WorldSpec,
+    cable: CableSpec,
+    hold: HoldSpec,
+    before: FloatArray | None,
+    after: FloatArray | None,
+    pad_exit: float,
+) -> tuple[list[FloatArray], list[float | None]]:
+    """Route points that run straight through a gripper's fingers along its tool x-axis."""
+    g = world.gripper(hold.arm)
+    x_tool = rotate(g.orientation, [1.0, 0.0, 0.0])
+    if before is not None:
+        s = -1.0 if float(x_tool @ (before - g.position)) > 0.0 else 1.0
+    elif after is not None:
+        s = 1.0 if float(x_tool @ (after - g.position)) >= 0.0 else -1.0
+    else:
+        s = 1.0
+    points: list[FloatArray] = []
+    arcs: list[float | None] = []
+    if hold.at - pad_exit > 0.0:
+        points.append(g.position - s * pad_exit * x_tool)
+        arcs.append(hold.at - pad_exit)
+    points.append(g.position.copy())
+    arcs.append(hold.at)
+    if hold.at + pad_exit < cable.length:
+        points.append(g.position + s * pad_exit * x_tool)
+        arcs.append(hold.at + pad_exit)
+    return points, arcs
+
+
 def _interpolate(polyline: FloatArray, arcs: FloatArray, s: float) -> FloatArray:
     """Point at arc length ``s`` on a polyline whose vertices have arc lengths ``arcs``."""
     if s <= arcs[0]:
@@ -123,6 +153,7 @@ def initial_vertices(
     disc: CableDiscretization,
     clip_length: float,
     table_height: float,
+    pad_exit: float = 0.012,
 ) -> FloatArray:
     """Vertex positions [m] of ``cable`` along its initial taut route.
 
@@ -133,6 +164,8 @@ def initial_vertices(
         clip_length: Length of a clip along its slot [m].
         table_height: Height of the table [m] (a cable with no fixture and
             no hold is laid on it).
+        pad_exit: The route runs along the gripper's tool x-axis this far [m]
+            to either side of a held point.
 
     Returns:
         Positions of the N + 1 vertices.  # (N + 1, 3)
@@ -148,7 +181,7 @@ def initial_vertices(
     for name in cable.via:
         nominal.append((world.fixture(name).position, None, world.fixture(name)))
     for h in cable.holds:
-        nominal.append((world.gripper(h.arm).position, h.at, None))
+        nominal.append((world.gripper(h.arm).position, h.at, h))
     if not nominal:
         start = np.array([0.0, 0.0, table_height + cable.radius])
         direction = np.array([1.0, 0.0, 0.0])
@@ -163,6 +196,11 @@ def initial_vertices(
             new = _peg_wrap(fixture, before, after, cable.radius)
         elif isinstance(fixture, ClipSpec):
             new = _clip_pass(fixture, before, clip_length)
+        elif isinstance(fixture, HoldSpec):
+            new, arcs_new = _through_gripper(world, cable, fixture, before, after, pad_exit)
+            points.extend(new)
+            known.extend(arcs_new)
+            continue
         else:
             new = [np.asarray(pos, dtype=float)]
         points.extend(new)

@@ -16,7 +16,12 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+from numpy.typing import NDArray
+
 from tautwire.errors import InvalidArgumentError
+
+FloatArray = NDArray[np.float64]
 
 
 def max_stable_timestep(
@@ -64,3 +69,51 @@ def required_mass_scaling(
     max_stable_timestep(segment_length, mass_per_length, tension)  # validates
     alpha = tension * (timestep / (safety * segment_length)) ** 2 / mass_per_length
     return max(1.0, alpha)
+
+
+def vertex_mass_scaling(
+    timestep: float,
+    rest_lengths: FloatArray,
+    masses: FloatArray,
+    tension: float,
+    safety: float = 1.0,
+) -> FloatArray:
+    """Smallest mass scaling alpha_i >= 1 of each vertex that keeps it stable.
+
+    A vertex of mass m_i between segments of lengths l_a and l_b under
+    tension T oscillates sideways at omega^2 = T (1/l_a + 1/l_b) / m_i, so it
+    needs alpha_i m_i >= T dt^2 (1/l_a + 1/l_b) / (2 safety^2). For uniform
+    segments (m = rho l) this is :func:`required_mass_scaling`; with
+    non-uniform ones only the vertices next to a short segment get heavier.
+
+    Args:
+        timestep: dt [s].
+        rest_lengths: Segment lengths [m].  # (N,)
+        masses: True vertex masses [kg].  # (N + 1,)
+        tension: T [N].
+        safety: Fraction (0, 1] of the limit to stay within.
+
+    Returns:
+        alpha_i.  # (N + 1,)
+    """
+    if timestep <= 0.0 or tension <= 0.0 or not 0.0 < safety <= 1.0:
+        raise InvalidArgumentError("timestep and tension must be > 0 and safety in (0, 1]")
+    lengths = np.asarray(rest_lengths, dtype=float)
+    m = np.asarray(masses, dtype=float)
+    if np.any(lengths <= 0.0) or np.any(m <= 0.0) or len(m) != len(lengths) + 1:
+        raise InvalidArgumentError("need N > 0 positive segment lengths and N + 1 positive masses")
+    inverse = np.zeros(len(m))
+    inverse[:-1] += 1.0 / lengths
+    inverse[1:] += 1.0 / lengths
+    alpha: FloatArray = np.maximum(1.0, tension * timestep**2 * inverse / (2.0 * safety**2 * m))
+    return alpha
+
+
+def vertex_timestep_limit(rest_lengths: FloatArray, masses: FloatArray, tension: float) -> float:
+    """Largest dt [s] at which every (scaled) vertex is stable: min sqrt(2 m_i / (T sum 1/l))."""
+    lengths = np.asarray(rest_lengths, dtype=float)
+    m = np.asarray(masses, dtype=float)
+    inverse = np.zeros(len(m))
+    inverse[:-1] += 1.0 / lengths
+    inverse[1:] += 1.0 / lengths
+    return float(np.min(np.sqrt(2.0 * m / (tension * inverse))))
