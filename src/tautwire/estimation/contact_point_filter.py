@@ -267,10 +267,19 @@ class ContactPointFilter:
         p = np.array([s[0] for s in self._buffer])
         f = np.array([s[1] for s in self._buffer])
         res = self.batch(p, f)
-        if float(np.max(np.diag(res.covariance))) > self.init_max_std**2:
+        # variance of unit weight: unmodelled effects (dynamics, sag, a round
+        # peg) show as chi2 above its degrees of freedom and widen P
+        # (only when chi2 exceeds dof by more than three of its std)
+        dof = max(2 * len(p) - 3, 1)
+        significant = res.chi2 > dof + 3.0 * math.sqrt(2.0 * dof)
+        P0 = res.covariance * (res.chi2 / dof if significant else 1.0)
+        if float(np.max(np.diag(P0))) > self.init_max_std**2:
             return False  # the spread is noise (e.g. a nearly slack cable): wait
+        u = f[-1] / np.linalg.norm(f[-1])
+        if float(u @ (res.estimate - p[-1])) < self.min_distance:
+            return False  # the cable pulls towards its contact: not behind the gripper
         self.x = res.estimate.copy()
-        self.P = res.covariance.copy()
+        self.P = P0
         self.running = True
         self._buffer.clear()
         return True

@@ -1,0 +1,145 @@
+"""The robot's prior picture of a cable, from the scenario's board design.
+
+What the robot knows before it moves: where the fixtures were designed to be,
+which fixtures the cable was routed along, its length and mass per length,
+and where its grippers hold it. Not the cable's actual state: contacts are
+estimated online from the force.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.model import FeatureKind, PathGraph
+from tautwire.primitives import PrimitiveContext, make_context
+from tautwire.robot import Arm
+from tautwire.scenario import Scenario
+from tautwire.scenario.models import Anchor, CableSpec, Peg
+
+FloatArray = NDArray[np.float64]
+
+
+def fixture_point(scenario: Scenario, name: str, height: float | None = None) -> FloatArray:
+    """Nominal point [m] where a cable bears on fixture ``name``.
+
+    A peg's point is on its axis at ``height`` (clamped to the peg), else at
+    mid-height; anchors and clips at their position.
+    """
+    f = scenario.fixture(name)
+    p = np.asarray(f.position, dtype=float)
+    if isinstance(f, Peg):
+        z = (
+            p[2] + 0.5 * f.height
+            if height is None
+            else float(np.clip(height, p[2], p[2] + f.height))
+        )
+        return np.array([p[0], p[1], z])
+    return p
+
+
+def initial_graph(scenario: Scenario, cable: CableSpec) -> PathGraph:
+    """The path graph of ``cable`` as the board design has it.
+
+    Points: the start anchor (``fixed``), the ``via`` fixtures (``contact``,
+    nominal positions), the holding gripper(s) (``gripper``, at their start
+    poses and held arc lengths), and free ends (``free``, hanging).
+    """
+    grippers = scenario.robot.grippers
+    holds = sorted(cable.held_by, key=lambda h: h.at)
+    if not holds:
+        raise InvalidArgumentError(f"cable {cable.name!r} is not held by any gripper")
+    first_hold = np.asarray(getattr(grippers, holds[0].arm).position, dtype=float)
+    points: list[FloatArray] = []
+    kinds: list[FeatureKind] = []
+    labels: list[str] = []
+    arcs: list[float] = []
+    if cable.start is not None:
+        start = scenario.fixture(cable.start)
+        if not isinstance(start, Anchor):
+            raise InvalidArgumentError(f"cable {cable.name!r} must start at an anchor")
+        points.append(np.asarray(start.position, dtype=float))
+        kinds.append("fixed")
+        labels.append(cable.start)
+        arcs.append(0.0)
+    route_z = float(points[0][2]) if points else float(first_hold[2])
+    for name in cable.via:
+        p = fixture_point(scenario, name, route_z)
+        arc = arcs[-1] + float(np.linalg.norm(p - points[-1])) if points else 0.0
+        points.append(p)
+        kinds.append("contact")
+        labels.append(name)
+        arcs.append(arc)
+    for hold in holds:
+        p = np.asarray(getattr(grippers, hold.arm).position, dtype=float)
+        if arcs and hold.at <= arcs[-1]:
+            raise InvalidArgumentError(
+                f"cable {cable.name!r}: the hold at {hold.at} m lies before its route's fixtures"
+            )
+        points.append(p)
+        kinds.append("gripper")
+        labels.append(hold.arm)
+        arcs.append(hold.at)
+    if not cable.start and arcs[0] > 0.0:  # a free first end hangs below the first hold
+        points.insert(0, points[0] - np.array([0.0, 0.0, arcs[0]]))
+        kinds.insert(0, "free")
+        labels.insert(0, "end")
+        arcs.insert(0, 0.0)
+    if arcs[-1] < cable.length:  # the free last end hangs below the last hold
+        points.append(points[-1] - np.array([0.0, 0.0, cable.length - arcs[-1]]))
+        kinds.append("free")
+        labels.append("end")
+        arcs.append(cable.length)
+    lengths = np.diff(arcs)
+    graph = PathGraph.from_positions(
+        np.array(points), cable.mass_per_length, lengths=lengths, kinds=kinds, labels=labels
+    )
+    for e in graph.edges:
+        e.stiffness = cable.stiffness * cable.length / e.length if e.length > 0 else cable.stiffness
+    return graph
+
+
+def sensing_arm(scenario: Scenario, cable: CableSpec) -> Arm:
+    """The arm that holds ``cable`` and carries a force-torque sensor."""
+    sensor = scenario.robot.sensor.arm
+    for hold in cable.held_by:
+        if sensor in (hold.arm, "both"):
+            return hold.arm
+    raise InvalidArgumentError(
+        f"cable {cable.name!r} is held by {[h.arm for h in cable.held_by]}, "
+        f"but the force-torque sensor is on the {sensor} wrist"
+    )
+
+
+def initial_context(
+    scenario: Scenario,
+    cable: str | None = None,
+    *,
+    k_initial: float | None = None,
+    estimation_period: float = 0.0,
+) -> PrimitiveContext:
+    """The primitives' shared context for ``cable`` (default: the first cable).
+
+    Args:
+        scenario: The scenario.
+        cable: Name of the cable the primitives work on.
+        k_initial: Initial stiffness guess [N/m]; default a generic 100 N/m
+            (the controller adapts; the true stiffness is not known).
+        estimation_period: Period [s] of the contact filter's iterations.
+    """
+    spec = scenario.cable(cable) if cable is not None else scenario.cables[0]
+    graph = initial_graph(scenario, spec)
+    arm = sensing_arm(scenario, spec)
+    fixtures = {f.name: fixture_point(scenario, f.name) for f in scenario.board.fixtures}
+    robot = scenario.robot
+    return make_context(
+        graph,
+        arm,
+        force_limit=robot.force_limit,
+        force_noise=robot.sensor.noise_force,
+        control_period=robot.control_period,
+        k_initial=100.0 if k_initial is None else k_initial,
+        estimation_period=estimation_period,
+        fixtures=fixtures,
+    )
