@@ -11,6 +11,7 @@ transmits, and guards against divergence. Robots
 
 from __future__ import annotations
 
+import logging
 from dataclasses import dataclass
 
 import mujoco
@@ -32,10 +33,19 @@ FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
 
 _BAD_WARNINGS = (
+    mujoco.mjtWarning.mjWARN_INERTIA,
     mujoco.mjtWarning.mjWARN_BADQACC,
     mujoco.mjtWarning.mjWARN_BADQPOS,
     mujoco.mjtWarning.mjWARN_BADQVEL,
 )
+
+
+_LOG = logging.getLogger("tautwire.sim")
+
+
+def _log_warning(message: str) -> None:
+    """MuJoCo's runtime warnings go to the log (stderr), never to stdout."""
+    _LOG.warning("MuJoCo: %s", message.strip())
 
 
 def compile_model(xml: str) -> mujoco.MjModel:
@@ -43,7 +53,10 @@ def compile_model(xml: str) -> mujoco.MjModel:
 
     The one expected warning (a flex whose edges carry no passive force: the
     segment springs are tendons here) would otherwise be printed on stdout,
-    where ``--json`` output goes; any other warning is raised.
+    where ``--json`` output goes; any other warning is raised. Afterwards
+    MuJoCo's runtime warnings go to the ``tautwire.sim`` logger (unless the
+    application installed its own handler); the world also counts them and
+    raises :class:`SimulationDiverged` on an instability.
 
     Raises:
         SimulationError: if MuJoCo refuses the model or warns.
@@ -56,7 +69,7 @@ def compile_model(xml: str) -> mujoco.MjModel:
     except ValueError as exc:
         raise SimulationError(f"MuJoCo could not compile the scene: {exc}") from exc
     finally:
-        mujoco.set_mju_user_warning(previous)
+        mujoco.set_mju_user_warning(previous if previous is not None else _log_warning)
     unexpected = [msg for msg in messages if "is not rigid and has no equality" not in msg]
     if unexpected:
         raise SimulationError(f"MuJoCo warned while compiling the scene: {unexpected[0]}")
