@@ -24,20 +24,20 @@ def test_limit_is_l_sqrt_rho_over_t() -> None:
 
 
 def test_required_scaling_reaches_the_limit_exactly() -> None:
-    dt, l, rho, t = 0.001, 0.0075, 0.03, 20.0
-    alpha = required_mass_scaling(dt, l, rho, t, safety=0.8)
+    dt, seg, rho, t = 0.001, 0.0075, 0.03, 20.0
+    alpha = required_mass_scaling(dt, seg, rho, t, safety=0.8)
     assert alpha > 1.0
-    assert max_stable_timestep(l, rho, t, alpha) * 0.8 == pytest.approx(dt)
-    assert required_mass_scaling(1e-5, l, rho, t) == 1.0
+    assert max_stable_timestep(seg, rho, t, alpha) * 0.8 == pytest.approx(dt)
+    assert required_mass_scaling(1e-5, seg, rho, t) == 1.0
 
 
 def test_uniform_vertex_scaling_equals_the_segment_formula() -> None:
-    n, l, rho, t, dt = 10, 0.01, 0.03, 15.0, 0.001
-    rest = np.full(n, l)
-    masses = np.full(n + 1, rho * l)
+    n, seg, rho, t, dt = 10, 0.01, 0.03, 15.0, 0.001
+    rest = np.full(n, seg)
+    masses = np.full(n + 1, rho * seg)
     masses[[0, -1]] *= 0.5
     alpha = vertex_mass_scaling(dt, rest, masses, t, 0.8)
-    assert np.allclose(alpha, required_mass_scaling(dt, l, rho, t, 0.8))
+    assert np.allclose(alpha, required_mass_scaling(dt, seg, rho, t, 0.8))
     assert vertex_timestep_limit(rest, alpha * masses, t) * 0.8 == pytest.approx(dt)
 
 
