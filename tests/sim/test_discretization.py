@@ -9,7 +9,10 @@ from tautwire.sim import CableSpec, HoldSpec, SimOptions
 from tautwire.sim.discretization import discretize_cable
 
 
-def _cable(holds=(HoldSpec("left", 0.42),), start="A", length=0.42) -> CableSpec:
+END_HOLD = (HoldSpec("left", 0.42),)
+
+
+def _cable(holds=END_HOLD, start="A", length=0.42) -> CableSpec:
     return CableSpec("W", length, 0.03, 200.0, 0.0025, start=start, holds=holds)
 
 
