@@ -8,7 +8,6 @@ import pytest
 from tautwire.sim import CableSpec, HoldSpec, SimOptions
 from tautwire.sim.discretization import discretize_cable
 
-
 END_HOLD = (HoldSpec("left", 0.42),)
 
 
