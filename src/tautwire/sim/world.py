@@ -288,7 +288,12 @@ class SimWorld:
 
     @property
     def max_force(self) -> float:
-        """Largest force [N] either gripper transmitted since the last reset."""
+        """Largest force [N] either gripper transmitted since the last reset.
+
+        Sampled (noise-free) at the end of every control period, as a robot's
+        force monitor would; a runner ends a step with cause "force_limit"
+        when it exceeds the scenario's limit.
+        """
         return self._max_force
 
     def reset_max_force(self) -> None:
