@@ -95,6 +95,11 @@ class ModelEstimator:
         self.estimation_period = float(estimation_period)
         self.taut_tension = float(taut_tension)
         self.trusted_std = float(trusted_std)
+        #: Whether the elasticity estimate learns now. Primitives that move the
+        #: gripper along the cable (tensioning) turn it on; those that move
+        #: across it (rotating) turn it off: there the length hardly changes
+        #: and what changes is mostly the contact estimate's drift.
+        self.learn_elasticity = True
         self.iterations = 0  # contact filter iterations so far
         self.changes: list[int] = []  # iterations at which a new contact was declared
         self._sum_p = np.zeros(3)
@@ -170,7 +175,7 @@ class ModelEstimator:
             s = self.graph.arc_lengths()
             self.contact_filter.edge_length = max(abs(s[self.gripper_index] - s[c]), 1e-3)
         self._accumulate(obs.time, p_g, f_raw)
-        if taut:
+        if taut and self.learn_elasticity:
             # the length's changes are the gripper's motion along the cable,
             # whatever error the contact position still has
             self.elasticity.update(tension, span)

@@ -98,6 +98,7 @@ class RotateAroundFeaturePoint(Primitive):
         """Remember the start; reset the success criteria."""
         if self.force is None:
             self.force = ctx.tension if ctx.tension is not None else 3.0
+        ctx.estimator.learn_elasticity = False
         self.turned = 0.0
         self._previous = None
         self._slack_since = None
