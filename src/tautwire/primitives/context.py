@@ -13,7 +13,12 @@ from tautwire.control import (
     MotionController,
     SafetyLimits,
 )
-from tautwire.estimation import DEFAULT_PROCESS_NOISE, ContactPointFilter, ElasticityEstimator
+from tautwire.estimation import (
+    DEFAULT_PROCESS_NOISE,
+    ContactChangeDetector,
+    ContactPointFilter,
+    ElasticityEstimator,
+)
 from tautwire.model import PathGraph
 from tautwire.primitives.model_estimator import ModelEstimator
 from tautwire.robot import Arm
@@ -69,6 +74,8 @@ def make_context(
     max_linear_speed: float = 0.1,
     max_angular_speed: float = 1.0,
     fixtures: dict[str, FloatArray] | None = None,
+    model_noise: float = 1e-3,
+    min_jump: float = 5e-3,
 ) -> PrimitiveContext:
     """A context with the default estimators and controllers.
 
@@ -85,6 +92,11 @@ def make_context(
         max_linear_speed: Gripper speed limit [m/s].
         max_angular_speed: Gripper angular speed limit [rad/s].
         fixtures: Nominal fixture positions [m] by name.
+        model_noise: Std [m] of what the line model misses (the cable's path
+            through the fingers, sensor mounting), added to the filter's
+            measurement noise; it keeps a real cable's small systematic
+            deviations from reading as contact changes.
+        min_jump: Smallest innovation [m] that can declare a contact change.
     """
     samples = max(1.0, estimation_period / control_period)
     # the filter sees the mean force of each estimation period: less noise
@@ -94,6 +106,8 @@ def make_context(
         process_noise=DEFAULT_PROCESS_NOISE if process_noise is None else process_noise,
         mass_per_length=graph.mass_per_length,
         min_tension=max(0.3, 5.0 * filter_noise),
+        position_noise=model_noise,
+        detector=ContactChangeDetector(min_innovation=min_jump),
     )
     elasticity = ElasticityEstimator(force_noise=force_noise, k_initial=k_initial)
     estimator = ModelEstimator(graph, arm, contact_filter, elasticity, estimation_period)

@@ -9,7 +9,7 @@ from numpy.typing import ArrayLike
 
 from tautwire.control import DualPose, Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import multiply
+from tautwire.model.quaternion import multiply, rotate
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -17,9 +17,19 @@ from tautwire.primitives.single_arm_tension import current_pose
 from tautwire.robot import Arm, Command, Observation
 
 
-def _axis_angle_quaternion(axis: np.ndarray, angle: float) -> np.ndarray:
-    h = 0.5 * angle
-    return np.array([math.cos(h), *(math.sin(h) * axis)])
+def _shortest_arc(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """The smallest rotation [w, x, y, z] that turns direction ``a`` onto ``b``."""
+    a = a / np.linalg.norm(a)
+    b = b / np.linalg.norm(b)
+    c = float(a @ b)
+    if c < -1.0 + 1e-9:  # opposite: half turn about any axis normal to a
+        n = np.cross(a, [1.0, 0.0, 0.0] if abs(a[0]) < 0.9 else [0.0, 1.0, 0.0])
+        n /= np.linalg.norm(n)
+        return np.array([0.0, *n])
+    v = np.cross(a, b)
+    q = np.array([1.0 + c, *v])
+    out: np.ndarray = q / np.linalg.norm(q)
+    return out
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -111,14 +121,25 @@ class RotateAroundFeaturePoint(Primitive):
         me = obs.gripper(self.arm)
         # the angle turned is the cable direction's: it does not jump when the
         # contact estimate does, and its noise does not add up (increments telescope)
+        radial = -state.direction
+        radial = radial - self.axis * float(self.axis @ radial)
         if state.taut:
-            cable = -state.direction
-            self._track_angle(cable - self.axis * float(self.axis @ cable))
+            self._track_angle(radial)
         # set point ahead on the circle: P control with gain k_p then moves
         # tangentially at speed * radius (feed-forward through the set point)
-        step = math.copysign(self.speed, self.angle) / ctx.controller.motion.k_p
+        offset = me.position - state.contact
+        radius = float(np.linalg.norm(offset - self.axis * float(self.axis @ offset)))
+        speed = self.speed
+        limit = 0.9 * float(min(ctx.limits.max_linear_speed))
+        if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
+            speed = limit / radius
+        step = math.copysign(speed, self.angle) / ctx.controller.motion.k_p
         target = state.contact + _rotate(me.position - state.contact, self.axis, step)
-        q_target = multiply(_axis_angle_quaternion(self.axis, step), me.orientation)
+        # keep the tool x-axis along the cable (contact -> gripper), as measured
+        q_target = me.orientation
+        if state.taut:
+            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
+            q_target = multiply(_shortest_arc(x_axis, -state.direction), me.orientation)
         desired = current_pose(obs)
         mine = Pose(target, q_target)
         desired = (
