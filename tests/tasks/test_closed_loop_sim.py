@@ -1,0 +1,50 @@
+"""Closed loop in the MuJoCo world: D then I around an anchor, blind."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tautwire.primitives import make_primitive
+from tautwire.scenario import load_scenario
+from tautwire.sim.build import build_world, robot_of, truth_of
+from tautwire.tasks import run_step
+from tautwire.tasks.initial_model import initial_context
+
+SCENARIO = Path(__file__).parents[2] / "scenarios" / "anchor-rotate.yaml"
+
+
+def run(seed: int) -> tuple[list[str], np.ndarray, float]:
+    scenario = load_scenario(SCENARIO)
+    world = build_world(scenario, seed=seed)
+    robot = robot_of(world)
+    ctx = initial_context(scenario, estimation_period=0.04)
+    outcomes = []
+    for step in scenario.task:
+        report = run_step(robot, make_primitive(step.primitive, **step.params), ctx)
+        outcomes.append(report.outcome)
+        assert report.max_force < scenario.robot.force_limit
+    estimate = ctx.estimator.contact_filter.estimate
+    assert estimate is not None
+    return outcomes, estimate, ctx.estimator.elasticity.k_hat
+
+
+@pytest.mark.slow
+def test_tension_then_circle_finds_the_anchor() -> None:
+    outcomes, estimate, k_hat = run(seed=1)
+    assert outcomes == ["success", "success"]
+    scenario = load_scenario(SCENARIO)
+    world = build_world(scenario, seed=1)
+    truth = truth_of(world).contact("A1")
+    assert truth is not None
+    assert np.linalg.norm(estimate - truth.point) < 0.003
+    assert k_hat == pytest.approx(200.0, rel=0.2)
+
+
+@pytest.mark.slow
+def test_same_seed_same_result() -> None:
+    a = run(seed=5)
+    b = run(seed=5)
+    assert a[0] == b[0]
+    np.testing.assert_array_equal(a[1], b[1])
+    assert a[2] == b[2]
