@@ -6,6 +6,7 @@ import click
 
 from tautwire.cli.demo import demo
 from tautwire.cli.estimate import estimate
+from tautwire.cli.run import run
 from tautwire.cli.validate import validate
 
-ALL: list[click.Command] = [demo, validate, estimate]
+ALL: list[click.Command] = [demo, run, validate, estimate]

@@ -1,0 +1,62 @@
+"""``tautwire run SCENARIO``: simulate a scenario and score it."""
+
+from __future__ import annotations
+
+import click
+from rich.console import Console
+from rich.table import Table
+
+from tautwire.scenario import load_scenario
+
+
+@click.command()
+@click.argument("scenario_file", metavar="SCENARIO", type=click.Path(dir_okay=False))
+@click.option("--seed", type=int, default=None, help="override the scenario's seed")
+@click.option(
+    "--out",
+    "out_dir",
+    type=click.Path(file_okay=False),
+    default=None,
+    help="folder for result.json",
+)
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
+def run(scenario_file: str, seed: int | None, out_dir: str | None, as_json: bool) -> int:
+    """Run the task of SCENARIO in the simulated world and score it against the truth."""
+    from tautwire.experiments.run_scenario import run_scenario, write_result
+
+    scenario = load_scenario(scenario_file)
+    err = Console(stderr=True)
+    with err.status(f"simulating {scenario.name} ...") as status:
+
+        def on_step(i: int, report: object) -> None:
+            status.update(f"simulating {scenario.name}: step {i + 2} of {len(scenario.task)}")
+
+        result, _, _ = run_scenario(scenario, seed, on_step=on_step)
+    if out_dir is not None:
+        result.files["result"] = str(write_result(result, out_dir))
+    if as_json:
+        click.echo(result.to_json())
+        return 0 if result.success else 1
+    table = Table(title=f"{scenario.name} (seed {result.seed})")
+    for col in ("step", "primitive", "outcome", "cause", "time [s]", "max force [N]"):
+        table.add_column(col)
+    for i, s in enumerate(result.steps):
+        table.add_row(
+            str(i + 1),
+            f"{s['letter']} {s['primitive']}",
+            s["outcome"],
+            s["cause"] or "",
+            f"{s['sim_time']:.2f}",
+            f"{s['max_force']:.2f}",
+        )
+    out = Console()
+    out.print(table)
+    for c in result.contacts:
+        err_txt = "-" if c.error is None else f"{1e3 * c.error:.1f} mm"
+        out.print(
+            f"contact {c.fixture}: estimate {[round(v, 4) for v in c.estimate]}, error {err_txt}"
+        )
+    k = result.stiffness
+    out.print(f"stiffness: estimate {k['estimate']:.1f} N/m, truth {k['truth']:.1f} N/m")
+    out.print(f"sim time {result.sim_time:.1f} s in {result.wall_time:.1f} s wall")
+    return 0 if result.success else 1
