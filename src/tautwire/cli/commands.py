@@ -6,7 +6,8 @@ import click
 
 from tautwire.cli.demo import demo
 from tautwire.cli.estimate import estimate
+from tautwire.cli.reproduce import reproduce
 from tautwire.cli.run import run
 from tautwire.cli.validate import validate
 
-ALL: list[click.Command] = [demo, run, validate, estimate]
+ALL: list[click.Command] = [demo, run, validate, estimate, reproduce]
