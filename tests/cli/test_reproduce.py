@@ -18,3 +18,15 @@ def test_fig5a_stiff_cable_adaptive_beats_fixed_gain() -> None:
     assert adaptive.tension_rms_error <= 0.05
     assert adaptive.max_force < 15.0
     assert adaptive.tension_rms_error < fixed.tension_rms_error
+
+
+@pytest.mark.slow
+def test_fig5b_files_and_convergence(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from tautwire.experiments.fig5bc import reproduce_fig5b
+
+    result = reproduce_fig5b(tmp_path)
+    assert 110 <= result["iterations"] <= 140  # about 125 iterations a circle
+    assert result["final_error"] < 0.002
+    assert result["run"]["success"]
+    for ext in ("png", "csv", "json"):
+        assert (tmp_path / f"fig5b.{ext}").stat().st_size > 100

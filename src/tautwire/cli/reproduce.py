@@ -19,8 +19,24 @@ def _fig5a(out: Path, seed: int) -> dict[str, Any]:
     return reproduce_fig5a(out, seed)
 
 
+def _fig5b(out: Path, seed: int) -> dict[str, Any]:
+    from tautwire.experiments.fig5bc import reproduce_fig5b
+
+    return reproduce_fig5b(out, seed)
+
+
+def _fig5c(out: Path, seed: int) -> dict[str, Any]:
+    from tautwire.experiments.fig5bc import reproduce_fig5c
+
+    return reproduce_fig5c(out, seed)
+
+
 #: What can be reproduced so far, by name.
-REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {"fig5a": _fig5a}
+REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
+    "fig5a": _fig5a,
+    "fig5b": _fig5b,
+    "fig5c": _fig5c,
+}
 
 
 @click.command()
@@ -35,7 +51,7 @@ REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {"fig5a": _fig
 @click.option("--seed", type=int, default=0, show_default=True, help="random seed")
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
 def reproduce(name: str, out_dir: str | None, seed: int, as_json: bool) -> int:
-    """Regenerate the paper's figure or table NAME (available: fig5a)."""
+    """Regenerate the paper's figure or table NAME (fig5a, fig5b, fig5c)."""
     if name not in REPRODUCTIONS:
         raise InvalidArgumentError(
             f"no reproduction named {name!r}; available: {', '.join(REPRODUCTIONS)}"

@@ -130,6 +130,7 @@ def run_scenario(
     estimation_period: float = 0.04,
     on_tick: Callable[[TickRecord], None] | None = None,
     on_step: Callable[[int, StepReport], None] | None = None,
+    on_truth: Callable[[GroundTruth], None] | None = None,
     **sim_options: Any,
 ) -> tuple[RunResult, PrimitiveContext, GroundTruth]:
     """Simulate ``scenario``'s task and score it.
@@ -140,6 +141,8 @@ def run_scenario(
         estimation_period: Period [s] of the contact filter's iterations.
         on_tick: Called every control period (recording, video).
         on_step: Called after each step with its index and report.
+        on_truth: Called once with the ground truth, for scoring hooks
+            (never handed to a primitive).
         **sim_options: Options of the simulated world (see ``SimOptions``).
 
     Returns:
@@ -150,6 +153,8 @@ def run_scenario(
     world = build_world(scenario, seed=seed, **sim_options)
     robot = robot_of(world, seed)
     truth = truth_of(world)
+    if on_truth is not None:
+        on_truth(truth)
     ctx = initial_context(scenario, estimation_period=estimation_period)
     reports: list[StepReport] = []
     for i, step in enumerate(scenario.task):
