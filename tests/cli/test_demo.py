@@ -7,7 +7,7 @@ from tautwire.cli.main import main
 
 
 def test_demo_json_and_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["demo", "--json", "--out", str(tmp_path), "--seed", "1"]) == 0
+    assert main(["demo", "--synthetic", "--json", "--out", str(tmp_path), "--seed", "1"]) == 0
     result = json.loads(capsys.readouterr().out)
     c = result["contact"]
     assert c["error_half_circle"] <= 0.0015
@@ -21,6 +21,18 @@ def test_demo_json_and_files(tmp_path: Path, capsys: pytest.CaptureFixture[str])
 
 
 def test_demo_table(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["demo", "--out", str(tmp_path)]) == 0
+    assert main(["demo", "--synthetic", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "error after half a circle" in out and "k_hat" in out
+
+
+@pytest.mark.slow
+def test_simulated_demo_json(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["demo", "--json", "--no-video", "--out", str(tmp_path)]) == 0
+    result = json.loads(capsys.readouterr().out)
+    run = result["run"]
+    assert run["success"] and [s["letter"] for s in run["steps"]] == ["D", "I"]
+    anchor = next(c for c in run["contacts"] if c["fixture"] == "A1")
+    assert anchor["error"] < 0.003
+    assert result["changes"]  # the peg took over and the robot noticed
+    assert (tmp_path / "contact_estimation.png").exists()

@@ -2,10 +2,13 @@
 
 from __future__ import annotations
 
+import json
+import os
 from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 
@@ -20,12 +23,87 @@ def _mm(value: float | None) -> str:
     type=click.Path(file_okay=False),
     default="out/demo",
     show_default=True,
-    help="folder for the plots and result.json",
+    help="folder for the plots, video and result.json",
 )
-@click.option("--seed", type=int, default=0, show_default=True, help="random seed")
+@click.option("--seed", type=int, default=None, help="random seed (default: the scenario's)")
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
-def demo(out_dir: str, seed: int, as_json: bool) -> int:
-    """Run the built-in demonstration and summarise it."""
+@click.option("--no-video", is_flag=True, help="do not render a video")
+@click.option(
+    "--synthetic", is_flag=True, help="the estimators alone on synthetic data (no simulator)"
+)
+def demo(out_dir: str, seed: int | None, as_json: bool, no_video: bool, synthetic: bool) -> int:
+    """Watch a robot find, blind, where a cable touches the board (simulated)."""
+    if synthetic:
+        return _synthetic(out_dir, seed or 0, as_json)
+    os.environ.setdefault("MUJOCO_GL", "egl")  # before mujoco is imported
+    from tautwire.experiments.sim_demo import DEMO_SCENARIO, run_sim_demo
+    from tautwire.scenario import load_scenario
+
+    scenario = load_scenario(DEMO_SCENARIO)
+    err = Console(stderr=True)
+    columns = (
+        TextColumn("{task.description}"),
+        BarColumn(),
+        TextColumn("{task.fields[t]}"),
+        TimeElapsedColumn(),
+    )
+    with Progress(*columns, console=err, transient=True) as bar:
+        task = bar.add_task(f"simulating {scenario.name}", total=25.0, t="")
+        result = run_sim_demo(
+            out_dir,
+            seed,
+            video=not no_video,
+            progress=lambda t: bar.update(task, completed=min(t, 25.0), t=f"{t:5.1f} s"),
+        )
+    if as_json:
+        click.echo(
+            json.dumps(
+                {
+                    "run": result.run,
+                    "changes": result.changes,
+                    "files": result.files,
+                    "video_error": result.video_error,
+                },
+                indent=2,
+            )
+        )
+        return 0 if result.run["success"] else 1
+    run = result.run
+    out = Console()
+    steps = Table(title=f"{run['scenario']}: primitives run blind (seed {run['seed']})")
+    for col in ("primitive", "outcome", "time [s]", "max force [N]"):
+        steps.add_column(col)
+    for s in run["steps"]:
+        steps.add_row(
+            f"{s['letter']} {s['primitive']}",
+            s["outcome"] + (f" ({s['cause']})" if s["cause"] else ""),
+            f"{s['sim_time']:.1f}",
+            f"{s['max_force']:.2f}",
+        )
+    out.print(steps)
+    contacts = Table(title="Where the cable touches the board: estimate vs truth")
+    for col in ("fixture", "estimate [m]", "error", "std [mm]"):
+        contacts.add_column(col)
+    for c in run["contacts"]:
+        contacts.add_row(
+            c["fixture"],
+            str([round(v, 4) for v in c["estimate"]]),
+            _mm(c["error"]),
+            str([round(1e3 * v, 2) for v in c["std"]]),
+        )
+    out.print(contacts)
+    k = run["stiffness"]
+    out.print(f"contact changes declared at filter iterations {result.changes}")
+    out.print(f"stiffness: k_hat {k['estimate']:.1f} N/m (truth {k['truth']:.1f} N/m)")
+    out.print(f"{run['sim_time']:.1f} s simulated in {run['wall_time']:.1f} s")
+    if result.video_error:
+        out.print(f"no video: {result.video_error}")
+    for name, path in result.files.items():
+        out.print(f"{name}: {path}")
+    return 0 if run["success"] else 1
+
+
+def _synthetic(out_dir: str, seed: int, as_json: bool) -> int:
     from tautwire.experiments.synthetic_demo import run_synthetic_demo
 
     err = Console(stderr=True)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -21,6 +22,7 @@ import numpy as np
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.scenario import Scenario, load_scenario
 from tautwire.sim.ground_truth import GroundTruth
+from tautwire.sim.world import SimWorld
 from tautwire.tasks import TickRecord
 
 SCENARIOS = Path(__file__).parents[3] / "scenarios"
@@ -36,8 +38,20 @@ def _estimation_period(scenario: Scenario) -> float:
     return 2.0 * math.pi / speed / ITERATIONS_PER_CIRCLE
 
 
-def record_rotation(scenario: Scenario, seed: int | None = None) -> dict[str, Any]:
-    """Run ``scenario`` (D then I) and record every contact-filter iteration of I."""
+def record_rotation(
+    scenario: Scenario,
+    seed: int | None = None,
+    on_time: Callable[[float], None] | None = None,
+    on_world: Callable[[SimWorld], None] | None = None,
+) -> dict[str, Any]:
+    """Run ``scenario`` (D then I) and record every contact-filter iteration of I.
+
+    Args:
+        scenario: A scenario whose task is D then I.
+        seed: Overrides the scenario's seed.
+        on_time: Called every control period with the time [s] (progress, video).
+        on_world: Called once with the simulated world (rendering).
+    """
     series: dict[str, list[Any]] = {
         "iteration": [],
         "t": [],
@@ -50,6 +64,8 @@ def record_rotation(scenario: Scenario, seed: int | None = None) -> dict[str, An
     state: dict[str, Any] = {"last": -1, "truth": None}
 
     def tick(rec: TickRecord) -> None:
+        if on_time is not None:
+            on_time(rec.observation.time)
         est = rec.context.estimator
         if rec.primitive.letter != "I" or est.iterations == state["last"]:
             return
@@ -81,7 +97,12 @@ def record_rotation(scenario: Scenario, seed: int | None = None) -> dict[str, An
         state["truth"] = truth
 
     result, ctx, _ = run_scenario(
-        scenario, seed, estimation_period=period, on_tick=tick, on_truth=keep_truth
+        scenario,
+        seed,
+        estimation_period=period,
+        on_tick=tick,
+        on_truth=keep_truth,
+        on_world=on_world,
     )
     first = series["iteration"][0] if series["iteration"] else 0
     declared = [c - first for c in ctx.estimator.changes if c >= first]

@@ -23,6 +23,7 @@ from tautwire.primitives import PrimitiveContext, make_primitive
 from tautwire.scenario import Scenario
 from tautwire.sim.build import build_world, robot_of, truth_of
 from tautwire.sim.ground_truth import GroundTruth
+from tautwire.sim.world import SimWorld
 from tautwire.tasks import StepReport, TickRecord, run_step
 from tautwire.tasks.initial_model import initial_context
 
@@ -131,6 +132,7 @@ def run_scenario(
     on_tick: Callable[[TickRecord], None] | None = None,
     on_step: Callable[[int, StepReport], None] | None = None,
     on_truth: Callable[[GroundTruth], None] | None = None,
+    on_world: Callable[[SimWorld], None] | None = None,
     **sim_options: Any,
 ) -> tuple[RunResult, PrimitiveContext, GroundTruth]:
     """Simulate ``scenario``'s task and score it.
@@ -143,6 +145,7 @@ def run_scenario(
         on_step: Called after each step with its index and report.
         on_truth: Called once with the ground truth, for scoring hooks
             (never handed to a primitive).
+        on_world: Called once with the simulated world (rendering).
         **sim_options: Options of the simulated world (see ``SimOptions``).
 
     Returns:
@@ -155,6 +158,8 @@ def run_scenario(
     truth = truth_of(world)
     if on_truth is not None:
         on_truth(truth)
+    if on_world is not None:
+        on_world(world)
     ctx = initial_context(scenario, estimation_period=estimation_period)
     reports: list[StepReport] = []
     for i, step in enumerate(scenario.task):
