@@ -76,6 +76,7 @@ def make_context(
     fixtures: dict[str, FloatArray] | None = None,
     model_noise: float = 1e-3,
     min_jump: float = 5e-3,
+    round_fixtures: dict[str, tuple[FloatArray, float]] | None = None,
 ) -> PrimitiveContext:
     """A context with the default estimators and controllers.
 
@@ -97,6 +98,8 @@ def make_context(
             measurement noise; it keeps a real cable's small systematic
             deviations from reading as contact changes.
         min_jump: Smallest innovation [m] that can declare a contact change.
+        round_fixtures: Pegs of the board design: name -> (axis point [m],
+            peg radius + cable radius [m]) (see :class:`ModelEstimator`).
     """
     samples = max(1.0, estimation_period / control_period)
     # the filter sees the mean force of each estimation period: less noise
@@ -110,7 +113,9 @@ def make_context(
         detector=ContactChangeDetector(min_innovation=min_jump),
     )
     elasticity = ElasticityEstimator(force_noise=force_noise, k_initial=k_initial)
-    estimator = ModelEstimator(graph, arm, contact_filter, elasticity, estimation_period)
+    estimator = ModelEstimator(
+        graph, arm, contact_filter, elasticity, estimation_period, round_fixtures=round_fixtures
+    )
     limits = SafetyLimits(force_limit, max_linear_speed, max_angular_speed)
     controller = HybridController(
         MotionController(k_p=2.0, k_o=4.0),

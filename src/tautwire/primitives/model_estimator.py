@@ -72,6 +72,12 @@ class ModelEstimator:
             force and position are averaged over it (0: every observation).
         taut_tension: Tension [N] above which the cable counts as taut.
         trusted_std: Largest std [m] of a contact estimate that is used.
+        round_fixtures: Round fixtures of the board design (pegs): name ->
+            (axis point [m], radius [m] the cable's centre line keeps from the
+            axis, i.e. peg radius + cable radius). A cable leaves a peg
+            tangentially, so while the gripper circles a peg the lines miss
+            its axis by that radius; knowing on which side (the rotation's
+            sense), the filter is fed lines shifted onto the axis.
     """
 
     def __init__(
@@ -83,6 +89,7 @@ class ModelEstimator:
         estimation_period: float = 0.0,
         taut_tension: float = 0.3,
         trusted_std: float = 0.01,
+        round_fixtures: dict[str, tuple[FloatArray, float]] | None = None,
     ) -> None:
         if graph.index_of("gripper", arm) is None:
             raise InvalidArgumentError(f"the path graph has no point held by the {arm} gripper")
@@ -100,6 +107,9 @@ class ModelEstimator:
         #: across it (rotating) turn it off: there the length hardly changes
         #: and what changes is mostly the contact estimate's drift.
         self.learn_elasticity = True
+        self.round_fixtures = dict(round_fixtures or {})
+        #: (axis, sense) of a rotation in progress (primitive I), else None.
+        self.rotation: tuple[FloatArray, float] | None = None
         self.iterations = 0  # contact filter iterations so far
         self.changes: list[int] = []  # iterations at which a new contact was declared
         self._sum_p = np.zeros(3)
@@ -196,11 +206,27 @@ class ModelEstimator:
         self._sum_f[:] = 0.0
         self._n = 0
         self._window_start = None
-        result = self.contact_filter.update(p_mean, f_mean)
+        result = self.contact_filter.update(self._on_axis(p_mean, f_mean), f_mean)
         self.iterations += 1
         if result.changed and result.estimate is not None:
             self.changes.append(self.iterations - 1)
             self._add_contact(result.estimate, p_mean)
+
+    def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
+        """The gripper position shifted so that its line passes a round contact's axis."""
+        c = self.contact_index
+        if self.rotation is None or c is None:
+            return p_g
+        fixture = self.round_fixtures.get(self.graph.points[c].label)
+        if fixture is None:
+            return p_g
+        axis, sense = self.rotation
+        side = np.cross(f, axis)  # horizontal normal of the line, towards the axis
+        n = float(np.linalg.norm(side))
+        if n < 1e-9:
+            return p_g
+        shifted: FloatArray = p_g + (sense * fixture[1] / n) * side
+        return shifted
 
     def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> None:
         """A new contact between the old one and the gripper: add its feature point."""
@@ -213,7 +239,12 @@ class ModelEstimator:
         s_new = min(max(s[g] - distance, s[c] + 1e-3), s[g] - 1e-3)
         if s_new <= s[c]:
             return
-        i = self.graph.insert_at_arc_length(s_new, kind="contact", label="estimated")
+        label = "estimated"
+        for name, (axis_point, radius) in self.round_fixtures.items():
+            # the board design says which peg this is, if one is near
+            if float(np.linalg.norm((estimate - axis_point)[:2])) <= radius + 0.02:
+                label = name
+        i = self.graph.insert_at_arc_length(s_new, kind="contact", label=label)
         self.graph.points[i].kind = "contact"
         self.graph.points[i].position = estimate.copy()
 

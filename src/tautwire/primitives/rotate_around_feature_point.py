@@ -109,6 +109,7 @@ class RotateAroundFeaturePoint(Primitive):
         if self.force is None:
             self.force = ctx.tension if ctx.tension is not None else 3.0
         ctx.estimator.learn_elasticity = False
+        ctx.estimator.rotation = (self.axis, math.copysign(1.0, self.angle))
         self.turned = 0.0
         self._previous = None
         self._slack_since = None

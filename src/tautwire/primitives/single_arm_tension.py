@@ -79,6 +79,7 @@ class SingleArmTension(Primitive):
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Remember the start; reset the success criteria."""
         ctx.estimator.learn_elasticity = True
+        ctx.estimator.rotation = None
         self._desired = current_pose(obs)
         self._start_position = obs.gripper(self.arm).position.copy()
         self._within_since = None

@@ -132,6 +132,11 @@ def initial_context(
     graph = initial_graph(scenario, spec)
     arm = sensing_arm(scenario, spec)
     fixtures = {f.name: fixture_point(scenario, f.name) for f in scenario.board.fixtures}
+    round_fixtures = {
+        f.name: (fixture_point(scenario, f.name), f.radius + spec.radius)
+        for f in scenario.board.fixtures
+        if isinstance(f, Peg)
+    }
     robot = scenario.robot
     return make_context(
         graph,
@@ -142,4 +147,5 @@ def initial_context(
         k_initial=100.0 if k_initial is None else k_initial,
         estimation_period=estimation_period,
         fixtures=fixtures,
+        round_fixtures=round_fixtures,
     )
