@@ -40,3 +40,14 @@ def test_rejects_bad_quaternions() -> None:
         as_quaternion([0, 0, 0, 0])
     with pytest.raises(InvalidArgumentError):
         as_quaternion([1, 0, 0])
+
+
+def test_orientation_along_nearly_minus_x() -> None:
+    for v in (
+        [-1.0, 0.0, 5.960464477539063e-08],
+        [-1.0, 1e-9, 0.0],
+        [-1.0, 0.0, 0.0],
+        [-0.3, 0.01, 0.0],
+    ):
+        x_axis = rotate(orientation_along(v), [1.0, 0.0, 0.0])
+        assert x_axis == pytest.approx(np.asarray(v) / np.linalg.norm(v), abs=1e-12)

@@ -90,9 +90,14 @@ def orientation_along(direction: ArrayLike) -> FloatArray:
     if n < 1e-12 or not math.isfinite(n):
         return IDENTITY.copy()
     c = dx / n  # cos of the angle between x and the direction
-    if c < -1.0 + 1e-12:  # opposite: half turn about z keeps "no twist" about the cable
-        return np.array([0.0, 0.0, 0.0, 1.0])
-    # q = [1 + c, x cross d] normalised: the half-angle rotation from x to d
-    w, y, z = 1.0 + c, -dz / n, dy / n
-    m = math.sqrt(w * w + y * y + z * z)
-    return np.array([w / m, 0.0, y / m, z / m])
+    if c >= 0.0:
+        # q = [1 + c, x cross d] normalised: the half-angle rotation from x to d
+        w, y, z = 1.0 + c, -dz / n, dy / n
+        m = math.sqrt(w * w + y * y + z * z)
+        return np.array([w / m, 0.0, y / m, z / m])
+    # near -x the formula loses precision: turn half about z (x -> -x), then
+    # the small rotation from -x to d; q = q_small q_z = [-z1, y1, 0, w1]
+    w1, y1, z1 = 1.0 - c, dz / n, -dy / n
+    m = math.sqrt(w1 * w1 + y1 * y1 + z1 * z1)
+    q = np.array([-z1 / m, y1 / m, 0.0, w1 / m])
+    return -q if q[0] < 0.0 else q
