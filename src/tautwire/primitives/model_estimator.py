@@ -33,6 +33,10 @@ from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
 
+#: A declared change to within this distance [m] of the current contact
+#: re-estimates that contact rather than adding a feature point.
+SAME_CONTACT = 0.03
+
 
 @dataclass
 class TensionState:
@@ -236,6 +240,10 @@ class ModelEstimator:
         distance = float(np.linalg.norm(p_g - estimate))
         if c is None or c > g:
             return
+        if self.graph.points[c].kind == "contact" and (
+            float(np.linalg.norm(self.graph.points[c].position - estimate)) < SAME_CONTACT
+        ):
+            return  # the same contact, estimated afresh: no new feature point
         s_new = min(max(s[g] - distance, s[c] + 1e-3), s[g] - 1e-3)
         if s_new <= s[c]:
             return
