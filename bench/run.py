@@ -118,11 +118,14 @@ def control_benchmarks(n: int) -> dict[str, Any]:
 
         return run
 
+    primitive_us = primitive_tick_us(n)
+
     kf = fresh_filter()
     tick_us = median_us(tick(lambda i: kf.update(p[40 + i % n], f[40 + i % n])), n)
     tick_fp_us = median_us(tick(filterpy_update), n)
     return {
         "control_tick_us": tick_us,
+        "primitive_I_tick_us": primitive_us,
         "control_tick_filterpy_us": tick_fp_us,
         "kf_update_us": kf_us,
         "filterpy_kf_update_us": fp_us,
@@ -132,6 +135,35 @@ def control_benchmarks(n: int) -> dict[str, Any]:
         "model_update_us": mu_us,
         "control_period_us": 4000.0,
     }
+
+
+def primitive_tick_us(n: int) -> float:
+    """Median time of one step of primitive I, the real loop: ModelEstimator + controller."""
+    from tautwire.primitives import RotateAroundFeaturePoint, make_context
+    from tautwire.robot import GripperState, Observation, Wrench
+
+    data = circle(seed=2, n=n + 400, samples_per_circle=125, tension=4.0)
+    graph = PathGraph.from_positions(
+        [data.contact[0], data.p_gripper[0]],
+        0.03,
+        kinds=["fixed", "gripper"],
+        labels=["A1", "left"],
+    )
+    ctx = make_context(graph, "left")
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    right = GripperState(np.array([0.35, -0.3, 0.12]), q)
+    obs = [
+        Observation(
+            0.004 * i,
+            GripperState(data.p_gripper[i], q),
+            right,
+            (Wrench("left", data.f_sens[i], np.zeros(3)),),
+        )
+        for i in range(n + 400)
+    ]
+    primitive = RotateAroundFeaturePoint("left", 100.0, speed=0.5, force=4.0, timeout=1e9)
+    primitive.start(obs[0], ctx)
+    return median_us(lambda i: primitive.step(obs[1 + i]), n)
 
 
 def sim_benchmarks(seconds: float) -> dict[str, Any]:

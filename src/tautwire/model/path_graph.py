@@ -150,14 +150,25 @@ class PathGraph:
 
     # -------------------------------------------------------------- mutation
     def refresh(self) -> None:
-        """Recompute point masses (eq:mass) and edge sags (equ:catenarySlack)."""
+        """Recompute point masses (eq:mass) and edge sags (equ:catenarySlack).
+
+        Call it after changing an edge's length directly; the graph's own
+        methods keep both up to date.
+        """
         for pt, m in zip(self.points, self.masses(), strict=True):
             pt.mass = float(m)
+        self._refresh_sags()
+
+    def _refresh_sags(self) -> None:
         for e, s in zip(self.edges, self.sags(), strict=True):
             e.sag = float(s)
 
     def set_positions(self, positions: ArrayLike) -> None:
-        """Set every point's position [m] and refresh masses and sags, shape (N, 3)."""
+        """Set every point's position [m], shape (N, 3), and refresh the sags.
+
+        Masses depend on the edge lengths only, which moving points leaves
+        unchanged.
+        """
         p = np.array(positions, dtype=float)  # a copy: the points own its rows
         if p.shape != (len(self.points), 3) or not np.all(np.isfinite(p)):
             raise InvalidArgumentError(
@@ -165,7 +176,7 @@ class PathGraph:
             )
         for pt, pi in zip(self.points, p, strict=True):
             pt.position = pi
-        self.refresh()
+        self._refresh_sags()
 
     def orient_along_edges(self, keep: Sequence[FeatureKind] = ("gripper",)) -> None:
         """Orient points with x along the cable, without twist.

@@ -29,6 +29,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
 from tautwire.model import PathGraph
 from tautwire.model.tension import G as GRAVITY_ABS
+from tautwire.model.vector3 import cross3, norm3
 from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
@@ -137,12 +138,15 @@ class ModelEstimator:
         The nearest constrained point before the gripper along the cable, or
         after it when nothing constrains the cable before.
         """
-        g = self.gripper_index
+        return self._contact_index(self.gripper_index)
+
+    def _contact_index(self, g: int) -> int | None:
+        points = self.graph.points
         for i in range(g - 1, -1, -1):
-            if self.graph.points[i].is_constrained:
+            if points[i].is_constrained:
                 return i
-        for i in range(g + 1, len(self.graph)):
-            if self.graph.points[i].is_constrained:
+        for i in range(g + 1, len(points)):
+            if points[i].is_constrained:
                 return i
         return None
 
@@ -152,28 +156,31 @@ class ModelEstimator:
         The filter's estimate once its largest std is below
         ``trusted_std``, else the model's point (the board design's prior).
         """
-        estimate = self.contact_filter.estimate
-        if estimate is not None and float(np.max(np.diag(self.contact_filter.P))) <= (
-            self.trusted_std**2
-        ):
-            return estimate
-        i = self.contact_index
-        return None if i is None else self.graph.points[i].position.copy()
+        return self._contact_position(self.contact_index)
+
+    def _contact_position(self, c: int | None) -> FloatArray | None:
+        kf = self.contact_filter
+        P = kf.P
+        if kf.running and max(P[0, 0], P[1, 1], P[2, 2]) <= self.trusted_std**2:
+            return kf.x.copy()
+        return None if c is None else self.graph.points[c].position.copy()
 
     # ------------------------------------------------------------------ loop
     def update(self, obs: Observation) -> TensionState:
         """Process one observation; return the tension state of the gripper's edge."""
         p_g = obs.gripper(self.arm).position
         f_raw = obs.wrench(self.arm).force
-        contact = self.contact_position()
+        g = self.gripper_index
+        c = self._contact_index(g)
+        contact = self._contact_position(c)
         if contact is None:
             contact = p_g + np.array([0.0, 0.0, -1.0])
         chord = contact - p_g
-        span = float(np.linalg.norm(chord))
+        span = norm3(chord)
         rho = self.graph.mass_per_length
         f = f_raw.copy()
         f[2] += 0.5 * rho * span * GRAVITY_ABS  # f - m_g g, m_g = rho d / 2 (equ:edge_tension)
-        fn = float(np.linalg.norm(f))
+        fn = norm3(f)
         taut = fn >= self.taut_tension
         if taut:
             direction = f / fn
@@ -182,29 +189,31 @@ class ModelEstimator:
         else:
             direction = np.array([0.0, 0.0, -1.0])
         tension = max(float(f @ direction), 0.0)
-        c = self.contact_index
         if c is not None:
             # the cable length to the contact sets the filter's noise scale
             # (never the distance to its own estimate, which can collapse)
             s = self.graph.arc_lengths()
-            self.contact_filter.edge_length = max(abs(s[self.gripper_index] - s[c]), 1e-3)
-        self._accumulate(obs.time, p_g, f_raw)
+            self.contact_filter.edge_length = max(abs(s[g] - s[c]), 1e-3)
+        if self._accumulate(obs.time, p_g, f_raw):  # the graph changed: indices anew
+            g = self.gripper_index
+            c = self._contact_index(g)
         if taut and self.learn_elasticity:
             # the length's changes are the gripper's motion along the cable,
             # whatever error the contact position still has
             self.elasticity.update(tension, span)
-        self._update_graph(p_g, obs)
         self.state = TensionState(tension, direction, f, f_raw, contact, span, taut)
+        self._update_graph(obs, g, c)
         return self.state
 
-    def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray) -> None:
+    def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray) -> bool:
+        """Add a sample; every estimation period, run the filter. True if the graph changed."""
         if self._window_start is None:
             self._window_start = time
         self._sum_p += p_g
         self._sum_f += f_raw
         self._n += 1
         if time - self._window_start + 1e-9 < self.estimation_period:
-            return
+            return False
         p_mean, f_mean = self._sum_p / self._n, self._sum_f / self._n
         self._sum_p[:] = 0.0
         self._sum_f[:] = 0.0
@@ -214,7 +223,8 @@ class ModelEstimator:
         self.iterations += 1
         if result.changed and result.estimate is not None:
             self.changes.append(self.iterations - 1)
-            self._add_contact(result.estimate, p_mean)
+            return self._add_contact(result.estimate, p_mean)
+        return False
 
     def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
         """The gripper position shifted so that its line passes a round contact's axis."""
@@ -225,56 +235,55 @@ class ModelEstimator:
         if fixture is None:
             return p_g
         axis, sense = self.rotation
-        side = np.cross(f, axis)  # horizontal normal of the line, towards the axis
-        n = float(np.linalg.norm(side))
+        side = cross3(f, axis)  # horizontal normal of the line, towards the axis
+        n = norm3(side)
         if n < 1e-9:
             return p_g
         shifted: FloatArray = p_g + (sense * fixture[1] / n) * side
         return shifted
 
-    def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> None:
+    def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> bool:
         """A new contact between the old one and the gripper: add its feature point."""
         g = self.gripper_index
         c = self.contact_index
         s = self.graph.arc_lengths()
         distance = float(np.linalg.norm(p_g - estimate))
         if c is None or c > g:
-            return
+            return False
         if self.graph.points[c].kind == "contact" and (
             float(np.linalg.norm(self.graph.points[c].position - estimate)) < SAME_CONTACT
         ):
-            return  # the same contact, estimated afresh: no new feature point
+            return False  # the same contact, estimated afresh: no new feature point
         s_new = min(max(s[g] - distance, s[c] + 1e-3), s[g] - 1e-3)
         if s_new <= s[c]:
-            return
+            return False
         label = "estimated"
         for name, (axis_point, radius) in self.round_fixtures.items():
             # the board design says which peg this is, if one is near
             if float(np.linalg.norm((estimate - axis_point)[:2])) <= radius + 0.02:
                 label = name
         i = self.graph.insert_at_arc_length(s_new, kind="contact", label=label)
-        self.graph.points[i].kind = "contact"
-        self.graph.points[i].position = estimate.copy()
+        point = self.graph.points[i]
+        point.kind, point.label, point.position = "contact", label, estimate.copy()
+        return True
 
-    def _update_graph(self, p_g: FloatArray, obs: Observation) -> None:
+    def _update_graph(self, obs: Observation, g: int, c: int | None) -> None:
+        """Map the constraints onto the graph (sec:constraintmapping)."""
         constraints: dict[int, FloatArray] = {}
         for i, pt in enumerate(self.graph.points):
             if pt.kind == "gripper":
                 constraints[i] = obs.gripper("left" if pt.label == "left" else "right").position
             elif pt.kind in ("fixed", "contact"):
                 constraints[i] = pt.position
-        estimate = self.contact_filter.estimate
-        c = self.contact_index
-        if estimate is not None and c is not None:
-            constraints[c] = estimate
-            self.graph.points[c].covariance = self.contact_filter.P.copy()
+        kf = self.contact_filter
+        if kf.running and c is not None:
+            constraints[c] = kf.x.copy()
+            self.graph.points[c].covariance = kf.P.copy()
         update_by_constraints(self.graph, constraints)
         for pt in self.graph.points:
             if pt.kind == "gripper":
                 pt.orientation = obs.gripper("left" if pt.label == "left" else "right").orientation
         if self.state is not None and c is not None:
-            edge = self.graph.edges[
-                self.gripper_index - 1 if c < self.gripper_index else self.gripper_index
-            ]
+            edge = self.graph.edges[g - 1 if c < g else g]
             edge.tension = self.state.tension
             edge.stiffness = self.elasticity.k_hat

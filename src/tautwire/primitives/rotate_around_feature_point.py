@@ -10,6 +10,7 @@ from numpy.typing import ArrayLike
 from tautwire.control import DualPose, Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import multiply, rotate
+from tautwire.model.vector3 import cross3, norm3
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -19,23 +20,23 @@ from tautwire.robot import Arm, Command, Observation
 
 def _shortest_arc(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """The smallest rotation [w, x, y, z] that turns direction ``a`` onto ``b``."""
-    a = a / np.linalg.norm(a)
-    b = b / np.linalg.norm(b)
+    a = a / norm3(a)
+    b = b / norm3(b)
     c = float(a @ b)
     if c < -1.0 + 1e-9:  # opposite: half turn about any axis normal to a
-        n = np.cross(a, [1.0, 0.0, 0.0] if abs(a[0]) < 0.9 else [0.0, 1.0, 0.0])
-        n /= np.linalg.norm(n)
+        n = cross3(a, [1.0, 0.0, 0.0] if abs(a[0]) < 0.9 else [0.0, 1.0, 0.0])
+        n /= norm3(n)
         return np.array([0.0, *n])
-    v = np.cross(a, b)
+    v = cross3(a, b)
     q = np.array([1.0 + c, *v])
-    out: np.ndarray = q / np.linalg.norm(q)
+    out: np.ndarray = q / math.sqrt(float(q @ q))
     return out
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
     """Rodrigues' rotation of ``v`` about the unit ``axis`` by ``angle`` [rad]."""
     c, s = math.cos(angle), math.sin(angle)
-    out: np.ndarray = v * c + np.cross(axis, v) * s + axis * float(axis @ v) * (1.0 - c)
+    out: np.ndarray = v * c + cross3(axis, v) * s + axis * float(axis @ v) * (1.0 - c)
     return out
 
 
@@ -86,7 +87,7 @@ class RotateAroundFeaturePoint(Primitive):
         if not (speed > 0.0 and math.isfinite(speed)):
             raise InvalidArgumentError(f"speed must be > 0 rad/s, got {speed}")
         a = np.asarray(axis, dtype=float).reshape(3)
-        if not np.all(np.isfinite(a)) or np.linalg.norm(a) < 1e-9:
+        if not np.all(np.isfinite(a)) or norm3(a) < 1e-9:
             raise InvalidArgumentError(f"axis must be a non-zero 3-vector, got {axis!r}")
         if force is not None and not (force > 0.0 and math.isfinite(force)):
             raise InvalidArgumentError(f"force must be > 0 N, got {force}")
@@ -94,7 +95,7 @@ class RotateAroundFeaturePoint(Primitive):
         super().__init__(timeout if timeout is not None else 3.0 * nominal + 5.0)
         self.arm: Arm = arm
         self.angle = float(angle)
-        self.axis = a / np.linalg.norm(a)
+        self.axis = a / norm3(a)
         self.speed = float(speed)
         self.force = force
         self.about = about
@@ -129,7 +130,7 @@ class RotateAroundFeaturePoint(Primitive):
         # set point ahead on the circle: P control with gain k_p then moves
         # tangentially at speed * radius (feed-forward through the set point)
         offset = me.position - state.contact
-        radius = float(np.linalg.norm(offset - self.axis * float(self.axis @ offset)))
+        radius = float(norm3(offset - self.axis * float(self.axis @ offset)))
         speed = self.speed
         limit = 0.9 * float(min(ctx.limits.max_linear_speed))
         if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
@@ -141,26 +142,26 @@ class RotateAroundFeaturePoint(Primitive):
         if state.taut:
             x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
             q_target = multiply(_shortest_arc(x_axis, -state.direction), me.orientation)
-        desired = current_pose(obs)
+        current = current_pose(obs)
         mine = Pose(target, q_target)
         desired = (
-            DualPose(mine, desired.right) if self.arm == "left" else DualPose(desired.left, mine)
+            DualPose(mine, current.right) if self.arm == "left" else DualPose(current.left, mine)
         )
         tensions = (self.force, None) if self.arm == "left" else (None, self.force)
         forces = (state.force, None) if self.arm == "left" else (None, state.force)
         directions = (state.direction, None) if self.arm == "left" else (None, state.direction)
         twist = ctx.controller(
-            current_pose(obs), desired, tensions, forces, ctx.estimator.elasticity.k_hat, directions
+            current, desired, tensions, forces, ctx.estimator.elasticity.k_hat, directions
         )
         self._judge(obs, state.tension, state.taut)
         return Command(twist)
 
     def _track_angle(self, radial: np.ndarray) -> None:
-        if self._previous is not None and np.linalg.norm(radial) > 1e-6:
-            cross = float(self.axis @ np.cross(self._previous, radial))
+        if self._previous is not None and norm3(radial) > 1e-6:
+            cross = float(self.axis @ cross3(self._previous, radial))
             dot = float(self._previous @ radial)
             self.turned += math.atan2(cross, dot)
-        if np.linalg.norm(radial) > 1e-6:
+        if norm3(radial) > 1e-6:
             self._previous = radial.copy()
 
     def _judge(self, obs: Observation, tension: float, taut: bool) -> None:
