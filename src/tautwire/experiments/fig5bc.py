@@ -109,7 +109,10 @@ def record_rotation(
     return {"series": series, "result": result.to_dict(), "changes": declared, "period": period}
 
 
-def _arrays(series: dict[str, list[Any]]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def series_arrays(
+    series: dict[str, list[Any]],
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Iteration index, estimate, std and truth of a recorded rotation, NaN where missing."""
     n = len(series["iteration"])
     est = np.full((n, 3), np.nan)
     std = np.full((n, 3), np.nan)
@@ -123,7 +126,7 @@ def _arrays(series: dict[str, list[Any]]) -> tuple[np.ndarray, np.ndarray, np.nd
 
 
 def _write_csv(path: Path, series: dict[str, list[Any]]) -> None:
-    k, est, std, truth = _arrays(series)
+    k, est, std, truth = series_arrays(series)
     grip = np.asarray(series["gripper"])
     with path.open("w", newline="") as fh:
         w = csv.writer(fh)
@@ -171,7 +174,7 @@ def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     out.mkdir(parents=True, exist_ok=True)
     run = record_rotation(load_scenario(SCENARIOS / "anchor-rotate.yaml"), seed)
     s = run["series"]
-    k, est, std, truth = _arrays(s)
+    k, est, std, truth = series_arrays(s)
     t = np.asarray(s["t"])
     grip = np.asarray(s["gripper"])
     vx = np.gradient(grip[:, 0], t) if len(t) > 2 else np.zeros(len(t))
@@ -220,7 +223,7 @@ def reproduce_fig5c(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     out.mkdir(parents=True, exist_ok=True)
     run = record_rotation(load_scenario(SCENARIOS / "peg-change.yaml"), seed)
     s = run["series"]
-    k, est, std, truth = _arrays(s)
+    k, est, std, truth = series_arrays(s)
     fixtures = s["truth_fixture"]
     true_change = next((i for i in range(1, len(fixtures)) if fixtures[i] != fixtures[i - 1]), None)
     declared = run["changes"]

@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from tautwire.errors import SimulationError
-from tautwire.experiments.fig5bc import record_rotation
+from tautwire.experiments.fig5bc import record_rotation, series_arrays
 from tautwire.scenario import load_scenario
 from tautwire.sim.world import SimWorld
 
@@ -109,16 +109,14 @@ def run_sim_demo(
         if recorder is not None:
             recorder.close()
     s = run["series"]
-    n = len(s["iteration"])
-    est = np.array([e if e is not None else [np.nan] * 3 for e in s["estimate"]], dtype=float)
-    std = np.array([e if e is not None else [np.nan] * 3 for e in s["std"]], dtype=float)
-    truth = np.array([e if e is not None else [np.nan] * 3 for e in s["truth"]], dtype=float)
+    k, est, std, truth = series_arrays(s)
+    n = len(k)
     result = SimDemoResult(run["result"], n, run["changes"])
     if n:
         result.files["plot"] = str(
             plot_contact_estimation(
                 out / "contact_estimation.png",
-                np.arange(n),
+                k,
                 est - truth,
                 std,
                 changes=run["changes"],
