@@ -190,6 +190,15 @@ class ContactPointFilter:
         """Number of samples given to :meth:`update` so far."""
         return self._count
 
+    def reset(self) -> None:
+        """Forget the estimate and the buffered samples: start afresh for a new contact."""
+        self.x = np.zeros(3)
+        self.P = np.zeros((3, 3))
+        self.running = False
+        self._buffer.clear()
+        self._recent.clear()
+        self.detector.reset()
+
     # --------------------------------------------------------------- internals
     def _span(self, p: FloatArray) -> float:
         if self.edge_length is not None:

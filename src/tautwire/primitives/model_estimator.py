@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
-from tautwire.model import PathGraph
+from tautwire.model import FeaturePoint, PathGraph
 from tautwire.model.tension import G as GRAVITY_ABS
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.robot import Arm, Observation
@@ -122,6 +122,9 @@ class ModelEstimator:
         self._n = 0
         self._window_start: float | None = None
         self.state: TensionState | None = None
+        self._gripper_positions: dict[str, FloatArray] = {}
+        #: The feature point that the contact filter estimates (None: none yet).
+        self._filter_point: FeaturePoint | None = None
 
     # ----------------------------------------------------------------- graph
     @property
@@ -159,19 +162,50 @@ class ModelEstimator:
         return self._contact_position(self.contact_index)
 
     def _contact_position(self, c: int | None) -> FloatArray | None:
+        if c is None:
+            return None
+        point = self.graph.points[c]
+        if point.kind == "gripper":  # the other gripper: its position is measured
+            return self._gripper_positions.get(point.label, point.position).copy()
         kf = self.contact_filter
         P = kf.P
-        if kf.running and max(P[0, 0], P[1, 1], P[2, 2]) <= self.trusted_std**2:
+        if (
+            point is self._filter_point
+            and kf.running
+            and max(P[0, 0], P[1, 1], P[2, 2]) <= self.trusted_std**2
+        ):
             return kf.x.copy()
-        return None if c is None else self.graph.points[c].position.copy()
+        return point.position.copy()
+
+    def _track(self, c: int | None) -> bool:
+        """Point the contact filter at point ``c``; False if ``c`` needs no filter.
+
+        A gripper needs none (its position is measured). When the gripper's
+        edge comes to bear on another point than the filter's (a clip was
+        added, the cable was grasped, a contact was removed), the filter
+        starts afresh for that point.
+        """
+        if c is None or self.graph.points[c].kind == "gripper":
+            return False
+        point = self.graph.points[c]
+        if point is not self._filter_point:
+            self.contact_filter.reset()
+            self._filter_point = point
+            self._sum_p[:] = 0.0
+            self._sum_f[:] = 0.0
+            self._n = 0
+            self._window_start = None
+        return True
 
     # ------------------------------------------------------------------ loop
     def update(self, obs: Observation) -> TensionState:
         """Process one observation; return the tension state of the gripper's edge."""
         p_g = obs.gripper(self.arm).position
         f_raw = obs.wrench(self.arm).force
+        self._gripper_positions = {"left": obs.left.position, "right": obs.right.position}
         g = self.gripper_index
         c = self._contact_index(g)
+        filtered = self._track(c)
         contact = self._contact_position(c)
         if contact is None:
             contact = p_g + np.array([0.0, 0.0, -1.0])
@@ -194,7 +228,7 @@ class ModelEstimator:
             # (never the distance to its own estimate, which can collapse)
             s = self.graph.arc_lengths()
             self.contact_filter.edge_length = max(abs(s[g] - s[c]), 1e-3)
-        if self._accumulate(obs.time, p_g, f_raw):  # the graph changed: indices anew
+        if filtered and self._accumulate(obs.time, p_g, f_raw):  # the graph changed
             g = self.gripper_index
             c = self._contact_index(g)
         if taut and self.learn_elasticity:
@@ -265,6 +299,7 @@ class ModelEstimator:
         i = self.graph.insert_at_arc_length(s_new, kind="contact", label=label)
         point = self.graph.points[i]
         point.kind, point.label, point.position = "contact", label, estimate.copy()
+        self._filter_point = point  # the filter, restarted on the change, estimates it
         return True
 
     def _update_graph(self, obs: Observation, g: int, c: int | None) -> None:
@@ -276,7 +311,7 @@ class ModelEstimator:
             elif pt.kind in ("fixed", "contact"):
                 constraints[i] = pt.position
         kf = self.contact_filter
-        if kf.running and c is not None:
+        if kf.running and c is not None and self.graph.points[c] is self._filter_point:
             constraints[c] = kf.x.copy()
             self.graph.points[c].covariance = kf.P.copy()
         update_by_constraints(self.graph, constraints)

@@ -1,0 +1,269 @@
+"""Randomised states for the trials of each primitive (the paper's Table I).
+
+The paper changed, between trials, "the placement of the fixtures, the
+initial position of the end effectors, as well as the elasticity and length
+of the DLOs". Each builder here draws exactly those from its seed: cable
+stiffness log-uniform in [10, 1000] N/m, cable length uniform in
+[0.4, 1.0] m, fixture positions on the board and gripper start poses
+(uniform within ranges that keep the task feasible for the robot's
+workspace), and writes a scenario: the preparatory steps the primitive needs
+(e.g. D before I: a cable must be taut before it can be rotated), then the
+primitive under test. The robot's initial stiffness guess stays the generic
+100 N/m, so it is off by up to ten times.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
+from tautwire.scenario import Scenario
+from tautwire.scenario.loader import scenario_from_data
+from tautwire.scenario.primitive_catalogue import find_primitive
+from tautwire.scenario.workspace import WORKSPACE
+
+STIFFNESS_RANGE = (10.0, 1000.0)  # N/m, log-uniform
+LENGTH_RANGE = (0.4, 1.0)  # m, uniform
+MASS_PER_LENGTH = 0.03  # kg/m
+RADIUS = 0.0025  # m
+FORCE_NOISE = 0.05  # N
+FORCE_LIMIT = 15.0  # N
+#: Margin [m] kept from the workspace's faces.
+MARGIN = 0.05
+
+
+def primitive_name(letter: str) -> str:
+    """The canonical name of the primitive with ``letter``."""
+    return find_primitive(letter).name
+
+
+@dataclass(frozen=True)
+class TrialScene:
+    """A randomised scenario whose last step is the primitive under test.
+
+    Attributes:
+        letter: The tested primitive's letter.
+        scenario: The scenario (preparatory steps, then the primitive).
+        inputs: The randomised inputs, flat and JSON-ready.
+    """
+
+    letter: str
+    scenario: Scenario
+    inputs: dict[str, float | str]
+
+    def run(self, spec: TrialSpec, t0: float | None = None) -> TrialResult:
+        """Simulate the scenario; the trial's outcome is its first failure or success."""
+        from tautwire.experiments.run_scenario import run_scenario
+
+        start = time.perf_counter() if t0 is None else t0
+        result, _, _ = run_scenario(self.scenario, spec.seed)
+        steps = result.steps
+        failed = next((s for s in steps if s["outcome"] != "success"), None)
+        last = steps[-1] if steps else None
+        if failed is not None:
+            tested = failed is last and len(steps) == len(self.scenario.task)
+            where = "" if tested else f" (in the preparatory step {failed['letter']})"
+            outcome, cause = "failure", failed["cause"] or "error"
+            detail = f"{failed['detail']}{where}"
+        elif last is None:
+            outcome, cause, detail = "failure", "error", "the scenario has no steps"
+        else:
+            outcome, cause, detail = "success", None, str(last["detail"])
+        return TrialResult(
+            self.letter,
+            primitive_name(self.letter),
+            spec.index,
+            spec.seed,
+            self.inputs,
+            outcome,
+            cause,
+            detail,
+            result.max_force,
+            result.sim_time,
+            time.perf_counter() - start,
+        )
+
+
+class _Draw:
+    """Random draws of one trial, remembered as its inputs."""
+
+    def __init__(self, seed: int) -> None:
+        self.rng = np.random.default_rng(seed)
+        self.inputs: dict[str, float | str] = {}
+
+    def uniform(self, name: str, low: float, high: float) -> float:
+        value = float(self.rng.uniform(low, high))
+        self.inputs[name] = round(value, 6)
+        return value
+
+    def log_uniform(self, name: str, low: float, high: float) -> float:
+        value = float(np.exp(self.rng.uniform(math.log(low), math.log(high))))
+        self.inputs[name] = round(value, 6)
+        return value
+
+    def choice(self, name: str, options: tuple[str, ...]) -> str:
+        value = options[int(self.rng.integers(len(options)))]
+        self.inputs[name] = value
+        return value
+
+    def point(self, name: str, p: np.ndarray) -> list[float]:
+        for axis, v in zip("xyz", p, strict=True):
+            self.inputs[f"{name}_{axis}"] = round(float(v), 6)
+        return [float(v) for v in p]
+
+
+def _inside(p: np.ndarray, margin: float = MARGIN) -> bool:
+    lo = np.asarray(WORKSPACE.lower) + margin
+    hi = np.asarray(WORKSPACE.upper) - margin
+    return bool(np.all(p >= lo) and np.all(p <= hi))
+
+
+def _yaw_quaternion(direction: np.ndarray) -> list[float]:
+    """[w, x, y, z] of a tool frame whose x-axis is the horizontal ``direction``."""
+    yaw = math.atan2(float(direction[1]), float(direction[0]))
+    return [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)]
+
+
+def _cable(draw: _Draw, **fields: Any) -> dict[str, Any]:
+    stiffness = draw.log_uniform("stiffness", *STIFFNESS_RANGE)
+    length = draw.uniform("length", *LENGTH_RANGE)
+    return {
+        "name": "W1",
+        "length": length,
+        "mass_per_length": MASS_PER_LENGTH,
+        "stiffness": stiffness,
+        "radius": RADIUS,
+        **fields,
+    }
+
+
+def _scenario(
+    letter: str,
+    seed: int,
+    grippers: dict[str, Any],
+    fixtures: list[dict[str, Any]],
+    cable: dict[str, Any],
+    task: list[dict[str, Any]],
+) -> Scenario:
+    return scenario_from_data(
+        {
+            "version": 1,
+            "name": f"table1-{letter}-{seed}",
+            "seed": seed,
+            "robot": {
+                "control_period": 0.004,
+                "force_limit": FORCE_LIMIT,
+                "sensor": {"arm": "left", "noise_force": FORCE_NOISE, "noise_torque": 0.002},
+                "grippers": grippers,
+            },
+            "board": {"fixtures": fixtures},
+            "cables": [cable],
+            "task": task,
+        },
+        source=f"<table1 trial {letter} seed {seed}>",
+    )
+
+
+def _parked(away_from: np.ndarray) -> dict[str, Any]:
+    """The unused right gripper, parked high and away from the cable."""
+    y = -0.5 if away_from[1] > -0.1 else 0.5
+    return {"position": [0.7, y, 0.5]}
+
+
+def _anchor_and_hold(
+    draw: _Draw, max_hold: float, min_hold: float = 0.25
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+    """An anchor, a hold on a cable from it and a slack start pose of the gripper.
+
+    Returns the anchor, the gripper's start position, the unit direction
+    anchor -> gripper and the cable's fields (the left gripper holds it).
+    """
+    cable = _cable(draw)
+    length = float(cable["length"])
+    for _ in range(1000):
+        anchor = np.array(
+            [float(draw.rng.uniform(0.0, 0.35)), float(draw.rng.uniform(-0.3, 0.3)), 0.0]
+        )
+        anchor[2] = float(draw.rng.uniform(0.06, 0.14))
+        at = float(draw.rng.uniform(min_hold, min(max_hold, length)))
+        slack = float(draw.rng.uniform(0.85, 0.97))
+        yaw = float(draw.rng.uniform(-math.pi, math.pi))
+        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+        gripper = anchor + slack * at * u + np.array([0.0, 0.0, draw.rng.uniform(-0.02, 0.04)])
+        if _inside(gripper) and gripper[2] > 0.05:
+            draw.point("anchor", anchor)
+            draw.point("gripper", gripper)
+            draw.inputs["hold_at"] = round(at, 6)
+            draw.inputs["slack"] = round(slack, 6)
+            cable.update(start="A1", held_by={"arm": "left", "at": at})
+            return anchor, gripper, u, cable
+    raise InvalidArgumentError("could not place an anchor and a hold inside the workspace")
+
+
+def scene_d(seed: int) -> TrialScene:
+    """D: a cable from an anchor, slack, held by the left gripper: tension it."""
+    draw = _Draw(seed)
+    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.8)
+    force = draw.uniform("force", 1.5, 4.0)
+    scenario = _scenario(
+        "D",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+            "right": _parked(gripper),
+        },
+        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        cable,
+        [{"primitive": "D", "arm": "left", "force": force}],
+    )
+    return TrialScene("D", scenario, draw.inputs)
+
+
+def scene_i(seed: int) -> TrialScene:
+    """I: tension (D), then rotate around the anchor by a random angle."""
+    draw = _Draw(seed)
+    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.5)
+    force = draw.uniform("force", 1.5, 4.0)
+    angle = draw.uniform("angle", 0.5 * math.pi, math.pi) * (
+        1.0 if draw.choice("sense", ("positive", "negative")) == "positive" else -1.0
+    )
+    scenario = _scenario(
+        "I",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+            "right": _parked(gripper),
+        },
+        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        cable,
+        [
+            {"primitive": "D", "arm": "left", "force": force},
+            {"primitive": "I", "arm": "left", "angle": angle, "speed": 0.5, "about": "A1"},
+        ],
+    )
+    return TrialScene("I", scenario, draw.inputs)
+
+
+#: Scene builders by letter.
+SCENES: dict[str, Callable[[int], TrialScene]] = {"D": scene_d, "I": scene_i}
+
+
+def trial_scene(letter: str, seed: int) -> TrialScene:
+    """The randomised scene of a trial of primitive ``letter`` with ``seed``.
+
+    Raises:
+        InvalidArgumentError: for a letter without a scene.
+    """
+    if letter not in LETTERS:
+        raise InvalidArgumentError(f"no primitive letter {letter!r} (expected one of {LETTERS})")
+    builder = SCENES.get(letter)
+    if builder is None:
+        raise InvalidArgumentError(f"no trial scene for primitive {letter} yet")
+    return builder(seed)
