@@ -22,6 +22,11 @@ def current_pose(obs: Observation) -> DualPose:
     )
 
 
+#: Weight of a new sample in the low-passed tension that success is judged on
+#: (time constant 12 control periods, ~0.05 s at 4 ms).
+SMOOTHING = 1.0 / 12.0
+
+
 class SingleArmTension(Primitive):
     """Primitive D: hybrid control with force control along the cable.
 
@@ -75,6 +80,7 @@ class SingleArmTension(Primitive):
         self._within_since: float | None = None
         self._start_position = np.zeros(3)
         self._ever_taut = False
+        self._smoothed: float | None = None
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Remember the start; reset the success criteria."""
@@ -84,6 +90,7 @@ class SingleArmTension(Primitive):
         self._start_position = obs.gripper(self.arm).position.copy()
         self._within_since = None
         self._ever_taut = False
+        self._smoothed = None
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -107,6 +114,13 @@ class SingleArmTension(Primitive):
         return Command(twist)
 
     def _judge(self, obs: Observation, tension: float) -> None:
+        # judge the tension low-passed over ~0.05 s: single samples carry the
+        # sensor's noise (and a hanging tail's swing), not the tension's level
+        if self._smoothed is None:
+            self._smoothed = tension
+        else:
+            self._smoothed += SMOOTHING * (tension - self._smoothed)
+        tension = self._smoothed
         band = max(self.tolerance * self.force, 0.05)
         if abs(tension - self.force) <= band:
             if self._within_since is None:
