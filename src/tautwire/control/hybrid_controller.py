@@ -28,12 +28,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from tautwire.control.force_controller import AdaptiveForceController, ForceController
 from tautwire.control.motion_controller import (
+    coordinated_motion_command,
     MotionController,
     coordinated_motion_twist,
 )
 from tautwire.control.quaternion_error import quaternion_error
 from tautwire.control.safety_limits import SafetyLimits
-from tautwire.control.task_space import CoordinatedPose, DualPose
+from tautwire.control.task_space import CoordinatedPose, DualPose, individual_twist
 from tautwire.errors import InvalidArgumentError
 
 FloatArray = NDArray[np.float64]
@@ -216,6 +217,57 @@ class HybridController:
             zeta_f[6 * arm : 6 * arm + 3] = self.force.velocity(f_d, f_c, f_hat, k_hats[arm])
             used[arm] = f_hat
         return HybridTerms(zeta_m, zeta_f, tension_projector(used))
+
+    def coordinated(
+        self,
+        current: DualPose,
+        desired: CoordinatedPose,
+        tension_desired: float | None,
+        tension_current: float,
+        k_hat: float | None = None,
+        relative_speed: float = 0.0,
+    ) -> FloatArray:
+        """Coordinated hybrid control: force control of the relative distance.
+
+        The cable runs between the two grippers, so its tension is set by
+        their distance |p_rel|. With u = p_rel / |p_rel|, the projector acts
+        on the relative linear block of the coordinated task space
+        [v_abs, w_abs, v_rel, w_rel]: P = u u^T there, zeros elsewhere, and
+
+            v_rel = (I - u u^T) v_rel,m + u (k_f (f_d - f_c) + relative_speed),
+
+        the absolute motion and the relative orientation stay under motion
+        control. A growing distance raises the tension, so the force
+        controller's speed is along +u.
+
+        Args:
+            current: Current poses of both grippers, world frame.
+            desired: Desired absolute and relative pose.
+            tension_desired: f_d [N], or None for pure motion control along u
+                (then ``relative_speed`` alone sets the distance's rate).
+            tension_current: Measured tension f_c [N] of the cable between them.
+            k_hat: Stiffness estimate [N/m] of the cable between them.
+            relative_speed: Feed-forward rate [m/s] of the distance |p_rel|
+                (sliding: the grippers part at this speed).
+
+        Returns:
+            The individual task-space twist [v_left, w_left, v_right, w_right]
+            [m/s, rad/s], speed-limited when ``limits`` is set.  # (12,)
+        """
+        zeta = coordinated_motion_command(self.motion, desired, current)
+        p_rel = current.left.position - current.right.position
+        distance = math.sqrt(float(p_rel @ p_rel))
+        if distance > 1e-9:
+            u = p_rel / distance
+            along = relative_speed
+            if tension_desired is not None:
+                along += self.force.speed(tension_desired, tension_current, k_hat)
+            v_rel = zeta[6:9]
+            v_rel -= u * (float(u @ v_rel) - along)
+        twist = individual_twist(zeta, current)
+        if self.limits is not None:
+            return self.limits.limit_twist(twist)
+        return twist
 
     def _motion(self, current: DualPose, desired: DualPose | CoordinatedPose) -> FloatArray:
         if isinstance(desired, CoordinatedPose):

@@ -207,6 +207,74 @@ def _anchor_and_hold(
     raise InvalidArgumentError("could not place an anchor and a hold inside the workspace")
 
 
+def _two_holds(
+    draw: _Draw, span_range: tuple[float, float], tail_max: float = 0.25
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+    """A cable with free ends held by both grippers, slack between them.
+
+    The left gripper (with the sensor) holds at s1, the right at s2 > s1.
+    Returns the left and right start positions, the unit direction left ->
+    right and the cable's fields.
+    """
+    cable = _cable(draw)
+    length = float(cable["length"])
+    for _ in range(1000):
+        span = float(draw.rng.uniform(*span_range))
+        span = min(span, length - 0.04)
+        tails = length - span
+        low, high = max(0.02, tails - tail_max), min(tail_max, tails - 0.02)
+        if low > high:
+            continue
+        s1 = float(draw.rng.uniform(low, high))
+        slack = float(draw.rng.uniform(0.85, 0.97))
+        yaw = float(draw.rng.uniform(-math.pi, math.pi))
+        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+        middle = np.array(
+            [
+                float(draw.rng.uniform(0.15, 0.55)),
+                float(draw.rng.uniform(-0.3, 0.3)),
+                float(draw.rng.uniform(0.22, 0.35)),
+            ]
+        )
+        left = middle - 0.5 * slack * span * u
+        right = middle + 0.5 * slack * span * u
+        if _inside(left) and _inside(right):
+            draw.point("left", left)
+            draw.point("right", right)
+            draw.inputs["hold_left"] = round(s1, 6)
+            draw.inputs["hold_right"] = round(s1 + span, 6)
+            draw.inputs["slack"] = round(slack, 6)
+            cable.update(
+                held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}]
+            )
+            return left, right, u, cable
+    raise InvalidArgumentError("could not place two holds inside the workspace")
+
+
+def _pair_grippers(left: np.ndarray, right: np.ndarray, u: np.ndarray) -> dict[str, Any]:
+    q = _yaw_quaternion(u)
+    return {
+        "left": {"position": list(left), "orientation": q},
+        "right": {"position": list(right), "orientation": q},
+    }
+
+
+def scene_a(seed: int) -> TrialScene:
+    """A: a cable held by both grippers, slack between them: tension it."""
+    draw = _Draw(seed)
+    left, right, u, cable = _two_holds(draw, (0.15, 0.5))
+    force = draw.uniform("force", 1.5, 4.0)
+    scenario = _scenario(
+        "A",
+        seed,
+        _pair_grippers(left, right, u),
+        [],
+        cable,
+        [{"primitive": "A", "force": force}],
+    )
+    return TrialScene("A", scenario, draw.inputs)
+
+
 def scene_d(seed: int) -> TrialScene:
     """D: a cable from an anchor, slack, held by the left gripper: tension it."""
     draw = _Draw(seed)
@@ -252,7 +320,7 @@ def scene_i(seed: int) -> TrialScene:
 
 
 #: Scene builders by letter.
-SCENES: dict[str, Callable[[int], TrialScene]] = {"D": scene_d, "I": scene_i}
+SCENES: dict[str, Callable[[int], TrialScene]] = {"A": scene_a, "D": scene_d, "I": scene_i}
 
 
 def trial_scene(letter: str, seed: int) -> TrialScene:

@@ -14,6 +14,9 @@ CAUSES: tuple[str, ...] = (
     "slipped",  # the cable left a gripper or the tension vanished unexpectedly
     "not_clipped",  # no snap was felt while pushing into a clip
     "no_contact",  # no tension could be built: nothing holds the cable
+    "precondition",  # the model's state does not allow the primitive (e.g. not held by two)
+    "missed",  # a grasp closed on nothing
+    "not_aligned",  # the gripper could not be aligned with the cable
     "diverged",  # the simulated world blew up
     "error",  # an exception inside the primitive or the robot
 )

@@ -3,13 +3,14 @@
 from __future__ import annotations
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.parallel_tension import ParallelTension
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.rotate_around_feature_point import RotateAroundFeaturePoint
 from tautwire.primitives.single_arm_tension import SingleArmTension
 
 #: Primitive classes by name.
 PRIMITIVES: dict[str, type[Primitive]] = {
-    cls.name: cls for cls in (SingleArmTension, RotateAroundFeaturePoint)
+    cls.name: cls for cls in (ParallelTension, SingleArmTension, RotateAroundFeaturePoint)
 }
 
 

@@ -1,0 +1,106 @@
+"""A - Parallel DLO Tension: tension the cable between the two grippers."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tautwire.control import coordinated_pose
+from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.tension_judge import TensionJudge
+from tautwire.robot import Command, Observation
+
+
+def held_between_grippers(ctx: PrimitiveContext) -> bool:
+    """Whether the sensing gripper's edge ends at the other gripper (both hold the cable)."""
+    c = ctx.estimator.contact_index
+    return c is not None and ctx.graph.points[c].kind == "gripper"
+
+
+class ParallelTension(Primitive):
+    """Primitive A: both grippers hold the cable; coordinated control tensions it.
+
+    Coordinated hybrid control (:meth:`HybridController.coordinated`): the
+    absolute pose and the relative orientation hold their start values, the
+    grippers' distance is under the adaptive inverse-damping force control
+    (k_f = lambda / k_hat) with the tension measured by the sensing wrist.
+
+    Success: the tension stays within ``tolerance`` of ``force`` for
+    ``hold_time``. Failure: ``no_contact`` when the grippers part by
+    ``max_travel`` without the cable becoming taut (it is not held by both);
+    ``timeout``.
+
+    Args:
+        force: Desired tension f_d [N].
+        tolerance: Allowed tension error, a fraction of ``force``.
+        hold_time: How long [s] the tension must stay within tolerance.
+        max_travel: Longest distance [m] the grippers may part to find tension.
+        timeout: Longest run time [s].
+    """
+
+    name = "parallel_tension"
+    letter = "A"
+
+    def __init__(
+        self,
+        force: float,
+        tolerance: float = 0.1,
+        hold_time: float = 0.5,
+        max_travel: float = 0.3,
+        timeout: float = 10.0,
+    ) -> None:
+        super().__init__(timeout)
+        if not (force > 0.0 and math.isfinite(force)):
+            raise InvalidArgumentError(f"force must be > 0 N, got {force}")
+        self.force = float(force)
+        self.tolerance = float(tolerance)
+        self.hold_time = float(hold_time)
+        self.max_travel = float(max_travel)
+        self._judge = TensionJudge(self.force, self.tolerance, self.hold_time)
+        self._start_distance = 0.0
+        self._ever_taut = False
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Hold the start's absolute pose; check that both grippers hold the cable."""
+        if not held_between_grippers(ctx):
+            self.outcome = Outcome.failure(
+                "precondition", "parallel tension needs the cable held by both grippers"
+            )
+        ctx.estimator.learn_elasticity = True
+        ctx.estimator.rotation = None
+        self._desired = coordinated_pose(current_pose(obs))
+        self._start_distance = float(np.linalg.norm(obs.left.position - obs.right.position))
+        self._judge = TensionJudge(self.force, self.tolerance, self.hold_time)
+        self._ever_taut = False
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Update the model, run the coordinated hybrid controller, judge."""
+        state = ctx.estimator.update(obs)
+        if self.outcome.done:
+            return Command()
+        self._ever_taut |= state.taut
+        twist = ctx.controller.coordinated(
+            current_pose(obs),
+            self._desired,
+            self.force,
+            state.tension,
+            ctx.estimator.elasticity.k_hat,
+        )
+        if self._judge.update(obs.time, state.tension):
+            self.outcome = Outcome.success(
+                f"tension {self._judge.smoothed:.2f} N held {self.hold_time:g} s"
+            )
+            ctx.tension = self.force
+        distance = float(np.linalg.norm(obs.left.position - obs.right.position))
+        if not self._ever_taut and distance - self._start_distance > self.max_travel:
+            self.outcome = Outcome.failure(
+                "no_contact",
+                f"the grippers parted {distance - self._start_distance:.2f} m"
+                " and the cable never became taut",
+            )
+        return Command(twist)
