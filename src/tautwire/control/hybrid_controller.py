@@ -28,8 +28,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from tautwire.control.force_controller import AdaptiveForceController, ForceController
 from tautwire.control.motion_controller import (
-    coordinated_motion_command,
     MotionController,
+    coordinated_motion_command,
     coordinated_motion_twist,
 )
 from tautwire.control.quaternion_error import quaternion_error

@@ -244,9 +244,7 @@ def _two_holds(
             draw.inputs["hold_left"] = round(s1, 6)
             draw.inputs["hold_right"] = round(s1 + span, 6)
             draw.inputs["slack"] = round(slack, 6)
-            cable.update(
-                held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}]
-            )
+            cable.update(held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}])
             return left, right, u, cable
     raise InvalidArgumentError("could not place two holds inside the workspace")
 
@@ -273,6 +271,35 @@ def scene_a(seed: int) -> TrialScene:
         [{"primitive": "A", "force": force}],
     )
     return TrialScene("A", scenario, draw.inputs)
+
+
+def scene_b(seed: int) -> TrialScene:
+    """B: tension (A), then part the grippers letting the cable slide through one."""
+    draw = _Draw(seed)
+    left, right, u, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3)
+    force = draw.uniform("force", 1.5, 3.0)
+    slide_arm = draw.choice("slide_arm", ("left", "right"))
+    holds = cable["held_by"]
+    tail = holds[0]["at"] if slide_arm == "left" else cable["length"] - holds[1]["at"]
+    distance = draw.uniform("distance", 0.05, max(0.0501, min(0.15, tail - 0.05)))
+    friction = draw.uniform("friction_force", 1.0, 2.5)
+    scenario = _scenario(
+        "B",
+        seed,
+        _pair_grippers(left, right, u),
+        [],
+        cable,
+        [
+            {"primitive": "A", "force": force},
+            {
+                "primitive": "B",
+                "slide_arm": slide_arm,
+                "distance": distance,
+                "friction_force": friction,
+            },
+        ],
+    )
+    return TrialScene("B", scenario, draw.inputs)
 
 
 def scene_d(seed: int) -> TrialScene:
@@ -319,8 +346,46 @@ def scene_i(seed: int) -> TrialScene:
     return TrialScene("I", scenario, draw.inputs)
 
 
+def scene_e(seed: int) -> TrialScene:
+    """E: tension (D), then move away from the anchor letting the cable slide."""
+    draw = _Draw(seed)
+    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6)
+    tail = float(cable["length"]) - float(cable["held_by"]["at"])
+    if tail < 0.1:  # room to slide: hold the cable further from its end
+        cable["held_by"]["at"] = float(cable["length"]) - 0.1
+        draw.inputs["hold_at"] = round(float(cable["held_by"]["at"]), 6)
+        gripper = anchor + float(draw.inputs["slack"]) * float(cable["held_by"]["at"]) * u
+        gripper[2] = float(draw.inputs["gripper_z"])
+        draw.point("gripper", gripper)
+        tail = 0.1
+    force = draw.uniform("force", 1.5, 3.0)
+    distance = draw.uniform("distance", 0.04, max(0.0401, min(0.15, tail - 0.05)))
+    friction = draw.uniform("friction_force", 1.0, 2.5)
+    scenario = _scenario(
+        "E",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+            "right": _parked(gripper),
+        },
+        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        cable,
+        [
+            {"primitive": "D", "arm": "left", "force": force},
+            {"primitive": "E", "arm": "left", "distance": distance, "friction_force": friction},
+        ],
+    )
+    return TrialScene("E", scenario, draw.inputs)
+
+
 #: Scene builders by letter.
-SCENES: dict[str, Callable[[int], TrialScene]] = {"A": scene_a, "D": scene_d, "I": scene_i}
+SCENES: dict[str, Callable[[int], TrialScene]] = {
+    "A": scene_a,
+    "B": scene_b,
+    "D": scene_d,
+    "E": scene_e,
+    "I": scene_i,
+}
 
 
 def trial_scene(letter: str, seed: int) -> TrialScene:

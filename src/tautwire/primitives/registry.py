@@ -3,14 +3,23 @@
 from __future__ import annotations
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.parallel_sliding import ParallelSliding
 from tautwire.primitives.parallel_tension import ParallelTension
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.rotate_around_feature_point import RotateAroundFeaturePoint
+from tautwire.primitives.single_arm_sliding import SingleArmSliding
 from tautwire.primitives.single_arm_tension import SingleArmTension
 
 #: Primitive classes by name.
 PRIMITIVES: dict[str, type[Primitive]] = {
-    cls.name: cls for cls in (ParallelTension, SingleArmTension, RotateAroundFeaturePoint)
+    cls.name: cls
+    for cls in (
+        ParallelTension,
+        ParallelSliding,
+        SingleArmTension,
+        SingleArmSliding,
+        RotateAroundFeaturePoint,
+    )
 }
 
 

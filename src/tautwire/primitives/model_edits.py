@@ -1,0 +1,84 @@
+"""How primitives change the path graph when they change the cable's state.
+
+The path graph is the robot's only picture of the cable (paper section
+"Model Representation"): when a gripper lets the cable slide, grasps it or
+clips it, the primitive records that here. Points added, fixed, moved along
+the cable; edge lengths d_i at rest; stiffnesses k_i = EA / d_i.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.estimation import ElasticityEstimator
+from tautwire.model import FeatureKind, PathGraph
+from tautwire.primitives.model_estimator import ModelEstimator
+
+FloatArray = NDArray[np.float64]
+
+
+def move_hold(graph: PathGraph, index: int, delta: float) -> None:
+    """Move the grasp of gripper point ``index`` by ``delta`` [m] of rest length.
+
+    The cable slid through the gripper: with ``delta`` > 0 the gripper now
+    holds it further along (the edge before the point grows, the edge after
+    it shrinks); < 0 the other way. Each edge keeps EA = k d.
+
+    Raises:
+        InvalidArgumentError: if the shrinking edge is missing or too short.
+    """
+    grow, shrink = (index - 1, index) if delta > 0.0 else (index, index - 1)
+    d = abs(delta)
+    if not (0 <= grow < len(graph.edges) and 0 <= shrink < len(graph.edges)):
+        raise InvalidArgumentError("the cable can only slide through a gripper it passes through")
+    if graph.edges[shrink].length <= d:
+        raise InvalidArgumentError(
+            f"only {graph.edges[shrink].length:.3f} m of cable is left beyond the gripper,"
+            f" {d:.3f} m cannot slide through"
+        )
+    for i, change in ((grow, d), (shrink, -d)):
+        e = graph.edges[i]
+        new = e.length + change
+        if np.isfinite(e.stiffness) and new > 0.0:
+            e.stiffness = e.stiffness * e.length / new
+        e.length = new
+    graph.refresh()
+
+
+def rescale_elasticity(estimator: ModelEstimator, factor: float) -> None:
+    """Restart the elasticity estimate at ``factor`` times its current k_hat.
+
+    After the gripper's edge changed length (sliding, a new contact), the
+    stiffness of the new edge is k_hat * d_old / d_new and the fit's offset
+    (the rest length) is stale: the estimator starts afresh from there.
+    """
+    old = estimator.elasticity
+    estimator.elasticity = ElasticityEstimator(
+        force_noise=old.force_noise,
+        forgetting=old.forgetting,
+        k_initial=float(np.clip(old.k_hat * factor, old.k_min, old.k_max)),
+        k_range=(old.k_min, old.k_max),
+        min_length_change=old.min_length_change,
+    )
+
+
+def add_point(
+    graph: PathGraph, arc_length: float, position: FloatArray, kind: FeatureKind, label: str
+) -> int:
+    """Insert a constrained point at ``arc_length`` [m] with a known position.
+
+    The orientation is Slerp-interpolated (the paper's goal points); the
+    position [m] is the constraint that the primitive established (a clip's
+    seat, a gripper's tool centre point).
+
+    Returns:
+        The new point's index.
+    """
+    i = graph.insert_at_arc_length(arc_length, kind=kind, label=label)
+    point = graph.points[i]
+    point.kind, point.label = kind, label
+    point.position = np.asarray(position, dtype=float).copy()
+    graph.refresh()
+    return i

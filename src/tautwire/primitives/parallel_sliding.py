@@ -1,0 +1,87 @@
+"""B - Parallel DLO Sliding: the grippers part, the cable slides through one of them."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from tautwire.control import coordinated_pose
+from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.model_estimator import TensionState
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.parallel_tension import held_between_grippers
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.sliding import SlidingPrimitive
+from tautwire.robot import Observation
+
+
+class ParallelSliding(SlidingPrimitive):
+    """Primitive B: coordinated control parts the grippers at a constant relative speed.
+
+    As in the paper: P = 0 (the tension is set by the grip force of
+    ``slide_arm``, see :class:`SlidingPrimitive`), x_dot_abs = 0 and
+    w_abs = w_rel = 0 under motion control, and a constant relative velocity
+    along the cable between the grippers slides ``slide_arm`` along it.
+
+    Args:
+        slide_arm: The gripper the cable slides through.
+        distance: How far [m] the grippers part.
+        friction_force: Desired sliding friction f_slid [N].
+        **kwargs: See :class:`SlidingPrimitive`.
+    """
+
+    name = "parallel_sliding"
+    letter = "B"
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Hold the absolute pose and the relative orientation of the start."""
+        self._desired = coordinated_pose(current_pose(obs))
+        self._start_distance = self._distance(obs)
+        super().on_start(obs, ctx)
+        if not held_between_grippers(ctx):
+            self.outcome = Outcome.failure(
+                "precondition", "parallel sliding needs the cable held by both grippers"
+            )
+
+    def begin(self, obs: Observation, ctx: PrimitiveContext, state: TensionState) -> None:
+        """The travel counts from here."""
+        self._start_distance = self._distance(obs)
+
+    def tension_motion(
+        self, obs: Observation, ctx: PrimitiveContext, state: TensionState
+    ) -> np.ndarray:
+        """A's coordinated force control with f_d = f_slid."""
+        return ctx.controller.coordinated(
+            current_pose(obs),
+            self._desired,
+            self.friction_force,
+            state.tension,
+            ctx.estimator.elasticity.k_hat,
+        )
+
+    @staticmethod
+    def _distance(obs: Observation) -> float:
+        return float(np.linalg.norm(obs.left.position - obs.right.position))
+
+    def travel(self, obs: Observation) -> float:
+        """How far [m] the grippers have parted."""
+        return self._distance(obs) - self._start_distance
+
+    def motion(
+        self, obs: Observation, ctx: PrimitiveContext, state: TensionState, moving: bool
+    ) -> np.ndarray:
+        """Constant relative speed along the cable while moving, else hold."""
+        return ctx.controller.coordinated(
+            current_pose(obs),
+            self._desired,
+            None,
+            0.0,
+            relative_speed=self.speed if moving else 0.0,
+        )
+
+    def hold_shift(self, ctx: PrimitiveContext) -> tuple[int, float]:
+        """The sliding gripper's point moves away from the other gripper along the arc."""
+        graph = ctx.graph
+        g = graph.index_of("gripper", self.slide_arm)
+        other = graph.index_of("gripper", "right" if self.slide_arm == "left" else "left")
+        assert g is not None
+        return g, (1.0 if other is None or other < g else -1.0)
