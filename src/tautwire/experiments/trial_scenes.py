@@ -378,12 +378,44 @@ def scene_e(seed: int) -> TrialScene:
     return TrialScene("E", scenario, draw.inputs)
 
 
+def scene_g(seed: int) -> TrialScene:
+    """G: a gripper turned 20-50 deg off the cable: tension (D), then align (G)."""
+    draw = _Draw(seed)
+    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6)
+    force = draw.uniform("force", 1.5, 3.0)
+    yaw_off = draw.uniform("yaw_offset", math.radians(20.0), math.radians(50.0))
+    yaw_off *= 1.0 if draw.choice("yaw_sense", ("positive", "negative")) == "positive" else -1.0
+    pitch = draw.uniform("pitch_offset", -math.radians(20.0), math.radians(20.0))
+    yaw = math.atan2(float(u[1]), float(u[0])) + yaw_off
+    qz = np.array([math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)])
+    qy = np.array([math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0])
+    from tautwire.model.quaternion import multiply
+
+    q = multiply(qz, qy)
+    scenario = _scenario(
+        "G",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": [float(v) for v in q]},
+            "right": _parked(gripper),
+        },
+        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        cable,
+        [
+            {"primitive": "D", "arm": "left", "force": force},
+            {"primitive": "G", "arm": "left"},
+        ],
+    )
+    return TrialScene("G", scenario, draw.inputs)
+
+
 #: Scene builders by letter.
 SCENES: dict[str, Callable[[int], TrialScene]] = {
     "A": scene_a,
     "B": scene_b,
     "D": scene_d,
     "E": scene_e,
+    "G": scene_g,
     "I": scene_i,
 }
 

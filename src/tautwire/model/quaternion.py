@@ -101,3 +101,28 @@ def orientation_along(direction: ArrayLike) -> FloatArray:
     m = math.sqrt(w1 * w1 + y1 * y1 + z1 * z1)
     q = np.array([-z1 / m, y1 / m, 0.0, w1 / m])
     return -q if q[0] < 0.0 else q
+
+
+def shortest_arc(a: ArrayLike, b: ArrayLike) -> FloatArray:
+    """The smallest rotation [w, x, y, z] that turns direction ``a`` onto ``b``.
+
+    Args:
+        a: Non-zero direction.  # (3,)
+        b: Non-zero direction.  # (3,)
+
+    Returns:
+        Unit quaternion q with rotate(q, a / |a|) = b / |b|; for opposite
+        directions a half turn about an axis normal to ``a``.
+    """
+    u = np.asarray(a, dtype=float)
+    v = np.asarray(b, dtype=float)
+    u = u / float(np.linalg.norm(u))
+    v = v / float(np.linalg.norm(v))
+    c = float(u @ v)
+    if c < -1.0 + 1e-9:
+        n = np.cross(u, [1.0, 0.0, 0.0] if abs(u[0]) < 0.9 else [0.0, 1.0, 0.0])
+        n /= float(np.linalg.norm(n))
+        return np.array([0.0, *n])
+    q = np.array([1.0 + c, *np.cross(u, v)])
+    out: FloatArray = q / float(np.linalg.norm(q))
+    return out

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.gripper_alignment import GripperAlignment
 from tautwire.primitives.parallel_sliding import ParallelSliding
 from tautwire.primitives.parallel_tension import ParallelTension
 from tautwire.primitives.primitive import Primitive
@@ -18,6 +19,7 @@ PRIMITIVES: dict[str, type[Primitive]] = {
         ParallelSliding,
         SingleArmTension,
         SingleArmSliding,
+        GripperAlignment,
         RotateAroundFeaturePoint,
     )
 }

@@ -1,0 +1,131 @@
+"""G - Gripper Alignment: turn the gripper's x-axis along the taut cable."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tautwire.control import DualPose, Pose
+from tautwire.errors import InvalidArgumentError
+from tautwire.model.quaternion import multiply, rotate, shortest_arc
+from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.robot import Arm, Command, Observation
+
+#: Low-pass weight of a new force direction (~0.05 s at 4 ms).
+SMOOTHING = 1.0 / 12.0
+
+
+class GripperAlignment(Primitive):
+    """Primitive G: align the tool x-axis with the cable direction measured by the force.
+
+    The paper: "the gripper is aligned along the DLO to achieve the most
+    stretched DLO orientation; any bending will degrade the linear
+    approximation". While D's force control keeps the tension along the
+    cable, the orientation set point is the current one turned by the
+    shortest arc from the tool x-axis onto the cable's direction (from the
+    contact towards the gripper, the negative of the low-passed
+    weight-compensated force's direction). The position holds.
+
+    Success: the angle between the tool x-axis and the cable stays below
+    ``tolerance`` for ``hold_time``. Failure: ``slipped`` if the cable goes
+    slack; ``not_aligned`` at the timeout.
+
+    Args:
+        arm: The gripper to align (it carries the sensor).
+        force: Tension set point [N]; default the context's (from D) or 2 N.
+        tolerance: Largest remaining angle [rad].
+        hold_time: How long [s] the angle must stay below ``tolerance``.
+        timeout: Longest run time [s].
+    """
+
+    name = "gripper_alignment"
+    letter = "G"
+
+    def __init__(
+        self,
+        arm: Arm,
+        force: float | None = None,
+        tolerance: float = math.radians(3.0),
+        hold_time: float = 0.3,
+        timeout: float = 8.0,
+    ) -> None:
+        super().__init__(timeout)
+        if arm not in ("left", "right"):
+            raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
+        if force is not None and not (force > 0.0 and math.isfinite(force)):
+            raise InvalidArgumentError(f"force must be > 0 N, got {force}")
+        self.arm: Arm = arm
+        self.force = force
+        self.tolerance = float(tolerance)
+        self.hold_time = float(hold_time)
+        self.angle = math.pi  # remaining angle [rad] between tool x and the cable
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Remember the start position; reset the criteria."""
+        if self.force is None:
+            self.force = ctx.tension if ctx.tension is not None else 2.0
+        ctx.estimator.learn_elasticity = False
+        ctx.estimator.rotation = None
+        self._hold = current_pose(obs)
+        self._cable: np.ndarray | None = None
+        self._within_since: float | None = None
+        self._slack_since: float | None = None
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Keep the tension, turn towards the cable, judge."""
+        assert self.force is not None
+        state = ctx.estimator.update(obs)
+        me = obs.gripper(self.arm)
+        q_target = me.orientation
+        if state.taut:
+            cable = -state.direction
+            self._cable = (
+                cable if self._cable is None else self._cable + SMOOTHING * (cable - self._cable)
+            )
+            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
+            c = float(x_axis @ self._cable) / float(np.linalg.norm(self._cable))
+            self.angle = math.acos(min(max(c, -1.0), 1.0))
+            q_target = multiply(shortest_arc(x_axis, self._cable), me.orientation)
+        mine = Pose(self._hold[0 if self.arm == "left" else 1].position, q_target)
+        start = self._hold
+        desired = DualPose(mine, start.right) if self.arm == "left" else DualPose(start.left, mine)
+        left = self.arm == "left"
+        twist = ctx.controller(
+            current_pose(obs),
+            desired,
+            (self.force, None) if left else (None, self.force),
+            (state.force, None) if left else (None, state.force),
+            ctx.estimator.elasticity.k_hat,
+            (state.direction, None) if left else (None, state.direction),
+        )
+        self._judge(obs, state.tension, state.taut)
+        return Command(twist)
+
+    def _judge(self, obs: Observation, tension: float, taut: bool) -> None:
+        assert self.force is not None
+        if taut and self.angle <= self.tolerance:
+            if self._within_since is None:
+                self._within_since = obs.time
+            elif obs.time - self._within_since >= self.hold_time:
+                self.outcome = Outcome.success(
+                    f"tool x-axis {math.degrees(self.angle):.1f} deg from the cable"
+                )
+                return
+        else:
+            self._within_since = None
+        if tension < 0.2 * self.force:
+            if self._slack_since is None:
+                self._slack_since = obs.time
+            elif obs.time - self._slack_since > 1.0:
+                self.outcome = Outcome.failure("slipped", "the cable went slack while aligning")
+        else:
+            self._slack_since = None
+        if self.elapsed >= self.timeout - 1e-9 and not self.outcome.done:
+            self.outcome = Outcome.failure(
+                "not_aligned",
+                f"the tool x-axis is still {math.degrees(self.angle):.1f} deg from the cable",
+            )
