@@ -409,6 +409,45 @@ def scene_g(seed: int) -> TrialScene:
     return TrialScene("G", scenario, draw.inputs)
 
 
+def scene_h(seed: int) -> TrialScene:
+    """H: tension (D), then the right gripper grasps the taut cable between anchor and gripper."""
+    draw = _Draw(seed)
+    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6, min_hold=0.3)
+    force = draw.uniform("force", 1.5, 3.0)
+    hold = float(cable["held_by"]["at"])
+    at = draw.uniform("grasp_at", 0.35 * hold, 0.65 * hold)
+    nominal = anchor + (at / hold) * (gripper - anchor)
+    for _ in range(1000):
+        offset = draw.rng.normal(size=3)
+        offset[2] = abs(offset[2]) + 0.5
+        start = nominal + draw.rng.uniform(0.1, 0.25) * offset / np.linalg.norm(offset)
+        start[2] = max(start[2], nominal[2] + 0.06)
+        if _inside(start) and np.linalg.norm(start - gripper) > 0.08:
+            break
+    else:
+        raise InvalidArgumentError("could not place the grasping gripper inside the workspace")
+    draw.point("right", start)
+    yaw = math.atan2(float(u[1]), float(u[0])) + draw.uniform("right_yaw", -0.5, 0.5)
+    scenario = _scenario(
+        "H",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+            "right": {
+                "position": list(start),
+                "orientation": [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)],
+            },
+        },
+        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        cable,
+        [
+            {"primitive": "D", "arm": "left", "force": force},
+            {"primitive": "H", "arm": "right", "at": at},
+        ],
+    )
+    return TrialScene("H", scenario, draw.inputs)
+
+
 #: Scene builders by letter.
 SCENES: dict[str, Callable[[int], TrialScene]] = {
     "A": scene_a,
@@ -416,6 +455,7 @@ SCENES: dict[str, Callable[[int], TrialScene]] = {
     "D": scene_d,
     "E": scene_e,
     "G": scene_g,
+    "H": scene_h,
     "I": scene_i,
 }
 

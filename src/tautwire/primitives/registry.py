@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.grasp_tensioned import GraspTensioned
 from tautwire.primitives.gripper_alignment import GripperAlignment
 from tautwire.primitives.parallel_sliding import ParallelSliding
 from tautwire.primitives.parallel_tension import ParallelTension
@@ -20,6 +21,7 @@ PRIMITIVES: dict[str, type[Primitive]] = {
         SingleArmTension,
         SingleArmSliding,
         GripperAlignment,
+        GraspTensioned,
         RotateAroundFeaturePoint,
     )
 }

@@ -1,0 +1,182 @@
+"""H - Grasp a Tensioned DLO: the second gripper grasps the taut cable along its edge."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tautwire.control import DualPose, Pose
+from tautwire.errors import InvalidArgumentError
+from tautwire.model.interpolation import lerp
+from tautwire.model.quaternion import orientation_along
+from tautwire.model.tension import G as GRAVITY
+from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.model_edits import add_point, rescale_elasticity
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.robot import Arm, Command, GripperCommand, Observation
+
+FloatArray = np.ndarray
+
+#: Height [m] above the cable from which the open fingers descend onto it.
+APPROACH_HEIGHT = 0.04
+#: Position error [m] at which an approach waypoint counts as reached.
+REACHED = 0.003
+#: Speed [m/s] of the final descent onto the cable.
+DESCENT_SPEED = 0.03
+
+
+class GraspTensioned(Primitive):
+    """Primitive H: grasp the cable at arc length ``at`` with the free gripper.
+
+    The sensing gripper keeps the cable taut (D's force control). The goal
+    is the model's interpolated feature point at ``at`` (paper: position by
+    linear interpolation between the edge's end points, with the sag of a
+    taut span, rho g a^2 delta (1 - delta) / (2 f), added below the chord),
+    recomputed every period as the model updates. The free gripper opens,
+    moves above the goal with its x-axis along the cable, descends onto it
+    and closes. The grasp is confirmed by the fingers' opening (they stop
+    on the cable instead of closing fully). The model then gets a gripper
+    point at ``at``, which becomes the far end of the sensing gripper's edge.
+
+    Success: the fingers closed on the cable and the sensing gripper still
+    feels tension. Failure: ``missed`` if the fingers close on nothing;
+    ``precondition`` if ``at`` does not lie on the sensing gripper's taut
+    edge; ``slipped`` if the tension vanishes; ``timeout``.
+
+    Args:
+        arm: The gripper that grasps (not the one that holds the cable).
+        at: Arc length [m] from the cable's start at which to grasp.
+        force: Tension [N] the sensing gripper keeps; default the context's.
+        timeout: Longest run time [s].
+    """
+
+    name = "grasp_tensioned"
+    letter = "H"
+
+    def __init__(
+        self, arm: Arm, at: float, force: float | None = None, timeout: float = 20.0
+    ) -> None:
+        super().__init__(timeout)
+        if arm not in ("left", "right"):
+            raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
+        if not (at >= 0.0 and math.isfinite(at)):
+            raise InvalidArgumentError(f"at must be an arc length >= 0 m, got {at}")
+        self.arm: Arm = arm
+        self.at = float(at)
+        self.force = force
+        self.phase = "approach"
+        self.goal = np.zeros(3)
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Check that ``at`` lies on the sensing gripper's taut edge."""
+        if self.force is None:
+            self.force = ctx.tension if ctx.tension is not None else 2.0
+        ctx.estimator.learn_elasticity = False
+        ctx.estimator.rotation = None
+        self.phase = "approach"
+        self._phase_since = obs.time
+        self._hold = current_pose(obs)
+        est = ctx.estimator
+        if self.arm == est.arm:
+            self.outcome = Outcome.failure(
+                "precondition", f"the {self.arm} gripper already holds the cable"
+            )
+            return
+        g, c = est.gripper_index, est.contact_index
+        s = ctx.graph.arc_lengths()
+        if c is None:
+            self.outcome = Outcome.failure("precondition", "the cable is taut against nothing")
+            return
+        lo, hi = sorted((float(s[c]), float(s[g])))
+        if not lo + 0.02 < self.at < hi - 0.02:
+            self.outcome = Outcome.failure(
+                "precondition",
+                f"at = {self.at:g} m is not on the taut edge [{lo:.3f}, {hi:.3f}] m",
+            )
+
+    def _goal(self, ctx: PrimitiveContext, tension: float) -> tuple[FloatArray, FloatArray]:
+        """The interpolated feature point at ``at``: position [m] and grasp orientation."""
+        graph = ctx.graph
+        i, delta = graph.locate(self.at)
+        a, b = graph.points[i].position, graph.points[i + 1].position
+        p = lerp(a, b, delta)
+        span = float(np.hypot(*(b - a)[:2]))
+        if tension > 0.1:
+            p[2] -= graph.mass_per_length * GRAVITY * span**2 * delta * (1 - delta) / (2 * tension)
+        along = b - a
+        along[2] = 0.0
+        return p, orientation_along(along)
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Keep the tension, approach, descend, close, confirm, record."""
+        assert self.force is not None
+        state = ctx.estimator.update(obs)
+        if self.outcome.done:
+            return Command()
+        sensing = ctx.estimator.arm
+        me = obs.gripper(self.arm)
+        goal, q = self._goal(ctx, state.tension)
+        self.goal = goal
+        fingers = GripperCommand("open")
+        if self.phase == "approach":
+            target = goal + np.array([0.0, 0.0, APPROACH_HEIGHT])
+            if float(np.linalg.norm(me.position - target)) < REACHED:
+                self.phase, self._phase_since = "descend", obs.time
+        elif self.phase == "descend":
+            depth = min(DESCENT_SPEED * (obs.time - self._phase_since), APPROACH_HEIGHT)
+            target = goal + np.array([0.0, 0.0, APPROACH_HEIGHT - depth])
+            if depth >= APPROACH_HEIGHT and float(np.linalg.norm(me.position - goal)) < 0.0015:
+                self.phase, self._phase_since = "close", obs.time
+        else:
+            target = me.position
+            fingers = GripperCommand("hold")
+            if obs.time - self._phase_since >= 0.2:
+                self._confirm(obs, ctx, state.tension)
+        mine = Pose(target, q)
+        other = self._hold[0 if sensing == "left" else 1]
+        keeper = Pose(other.position, other.orientation)
+        desired = DualPose(keeper, mine) if sensing == "left" else DualPose(mine, keeper)
+        left = sensing == "left"
+        twist = ctx.controller(
+            current_pose(obs),
+            desired,
+            (self.force, None) if left else (None, self.force),
+            (state.force, None) if left else (None, state.force),
+            ctx.estimator.elasticity.k_hat,
+            (state.direction, None) if left else (None, state.direction),
+        )
+        if self.phase == "close":  # hold still while the fingers close
+            k = 0 if self.arm == "left" else 6
+            twist[k : k + 6] = 0.0
+        if self.arm == "left":
+            return Command(twist, left=fingers)
+        return Command(twist, right=fingers)
+
+    def _confirm(self, obs: Observation, ctx: PrimitiveContext, tension: float) -> None:
+        assert self.force is not None
+        opening = obs.gripper(self.arm).opening
+        if opening < 1e-4:
+            error = float(np.linalg.norm(obs.gripper(self.arm).position - self.goal))
+            self.outcome = Outcome.failure(
+                "missed",
+                f"the {self.arm} fingers closed on nothing at the model's point"
+                f" ({1e3 * error:.1f} mm from it)",
+            )
+            return
+        if tension < 0.2 * self.force:
+            self.outcome = Outcome.failure("slipped", "the cable went slack while grasping")
+            return
+        est = ctx.estimator
+        s = ctx.graph.arc_lengths()
+        old = abs(float(s[est.gripper_index]) - float(s[est.contact_index or 0]))
+        add_point(ctx.graph, self.at, obs.gripper(self.arm).position, "gripper", self.arm)
+        s = ctx.graph.arc_lengths()
+        new = abs(float(s[est.gripper_index]) - self.at)
+        if new > 0.0:
+            rescale_elasticity(est, old / new)
+        self.outcome = Outcome.success(
+            f"grasped at {self.at:.3f} m, fingers {1e3 * opening:.1f} mm apart"
+        )
