@@ -448,12 +448,66 @@ def scene_h(seed: int) -> TrialScene:
     return TrialScene("H", scenario, draw.inputs)
 
 
+def scene_f(seed: int) -> TrialScene:
+    """F: tension (D), then press the cable into a clip between the anchor and the gripper."""
+    draw = _Draw(seed)
+    cable = _cable(draw)
+    length = float(cable["length"])
+    push = draw.uniform("push_force", 1.0, 4.0)
+    for _ in range(1000):
+        anchor = np.array(
+            [
+                float(draw.rng.uniform(0.0, 0.35)),
+                float(draw.rng.uniform(-0.3, 0.3)),
+                float(draw.rng.uniform(0.12, 0.2)),
+            ]
+        )
+        beyond = float(draw.rng.uniform(0.06, 0.12))
+        to_clip = float(draw.rng.uniform(0.15, 0.35))
+        at = min(to_clip + beyond, length)
+        yaw = float(draw.rng.uniform(-math.pi, math.pi))
+        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+        gripper = anchor + float(draw.rng.uniform(0.95, 0.98)) * at * u
+        # below the slack cable's sag, so that it does not start on the clip
+        seat = anchor + to_clip * u - np.array([0.0, 0.0, 0.05])
+        if _inside(gripper) and _inside(seat, 0.02) and at > to_clip + 0.05:
+            break
+    else:
+        raise InvalidArgumentError("could not place an anchor, a clip and a hold")
+    draw.point("anchor", anchor)
+    draw.point("gripper", gripper)
+    draw.point("clip", seat)
+    draw.inputs["hold_at"] = round(at, 6)
+    slot = yaw + draw.uniform("slot_offset", -math.radians(10.0), math.radians(10.0))
+    cable.update(start="A1", held_by={"arm": "left", "at": at})
+    force = draw.uniform("force", 1.5, 3.0)
+    scenario = _scenario(
+        "F",
+        seed,
+        {
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+            "right": _parked(gripper),
+        },
+        [
+            {"name": "A1", "type": "anchor", "position": list(anchor)},
+            {"name": "C1", "type": "clip", "position": list(seat), "yaw": slot, "push_force": push},
+        ],
+        cable,
+        [
+            {"primitive": "D", "arm": "left", "force": force},
+            {"primitive": "F", "arm": "left", "clip": "C1"},
+        ],
+    )
+    return TrialScene("F", scenario, draw.inputs)
+
+
 #: Scene builders by letter.
 SCENES: dict[str, Callable[[int], TrialScene]] = {
     "A": scene_a,
     "B": scene_b,
     "D": scene_d,
     "E": scene_e,
+    "F": scene_f,
     "G": scene_g,
     "H": scene_h,
     "I": scene_i,

@@ -26,6 +26,28 @@ from tautwire.robot import Arm
 FloatArray = NDArray[np.float64]
 
 
+@dataclass(frozen=True)
+class ClipInfo:
+    """A snap-in clip as the board's design gives it.
+
+    Attributes:
+        position: Where a clipped cable sits (the seat) [m].  # (3,)
+        yaw: Direction of the slot about world z [rad].
+        push_force: Force [N] the clip needs to let the cable in.
+        length: Length [m] of the clip along its slot.
+    """
+
+    position: FloatArray
+    yaw: float
+    push_force: float
+    length: float = 0.012
+
+    @property
+    def slot(self) -> FloatArray:
+        """Unit direction of the slot (horizontal)."""
+        return np.array([np.cos(self.yaw), np.sin(self.yaw), 0.0])
+
+
 @dataclass
 class PrimitiveContext:
     """The robot's picture of the task, handed from one primitive to the next.
@@ -40,6 +62,7 @@ class PrimitiveContext:
             established (None before any).
         fixtures: Nominal fixture positions [m] known from the board's design
             (goals such as clips), by name. Not the cable's state.
+        clips: The board design's clips by name.
     """
 
     estimator: ModelEstimator
@@ -48,6 +71,7 @@ class PrimitiveContext:
     control_period: float = 0.004
     tension: float | None = None
     fixtures: dict[str, FloatArray] = field(default_factory=dict)
+    clips: dict[str, ClipInfo] = field(default_factory=dict)
 
     @property
     def graph(self) -> PathGraph:
@@ -77,6 +101,7 @@ def make_context(
     model_noise: float = 1e-3,
     min_jump: float = 5e-3,
     round_fixtures: dict[str, tuple[FloatArray, float]] | None = None,
+    clips: dict[str, ClipInfo] | None = None,
 ) -> PrimitiveContext:
     """A context with the default estimators and controllers.
 
@@ -100,6 +125,7 @@ def make_context(
         min_jump: Smallest innovation [m] that can declare a contact change.
         round_fixtures: Pegs of the board design: name -> (axis point [m],
             peg radius + cable radius [m]) (see :class:`ModelEstimator`).
+        clips: The board design's clips by name.
     """
     samples = max(1.0, estimation_period / control_period)
     # the filter sees the mean force of each estimation period: less noise
@@ -123,5 +149,11 @@ def make_context(
         limits,
     )
     return PrimitiveContext(
-        estimator, controller, limits, control_period, None, dict(fixtures or {})
+        estimator,
+        controller,
+        limits,
+        control_period,
+        None,
+        dict(fixtures or {}),
+        dict(clips or {}),
     )

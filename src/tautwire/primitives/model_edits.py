@@ -82,3 +82,20 @@ def add_point(
     point.position = np.asarray(position, dtype=float).copy()
     graph.refresh()
     return i
+
+
+def drop_new_points(graph: PathGraph, known: list[int]) -> None:
+    """Remove the inner contact points not among ``known`` (ids of points).
+
+    While a primitive bends the cable over a fixture on purpose (clipping),
+    the contact filter may declare the bend a new contact; once the
+    primitive adds the fixture itself, those estimates are dropped.
+    """
+    keep = set(known)
+    i = 1
+    while i < len(graph.points) - 1:
+        point = graph.points[i]
+        if id(point) not in keep and point.kind == "contact":
+            graph.remove_point(i)
+        else:
+            i += 1

@@ -9,6 +9,7 @@ from tautwire.primitives.parallel_sliding import ParallelSliding
 from tautwire.primitives.parallel_tension import ParallelTension
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.rotate_around_feature_point import RotateAroundFeaturePoint
+from tautwire.primitives.single_arm_clipping import SingleArmClipping
 from tautwire.primitives.single_arm_sliding import SingleArmSliding
 from tautwire.primitives.single_arm_tension import SingleArmTension
 
@@ -20,6 +21,7 @@ PRIMITIVES: dict[str, type[Primitive]] = {
         ParallelSliding,
         SingleArmTension,
         SingleArmSliding,
+        SingleArmClipping,
         GripperAlignment,
         GraspTensioned,
         RotateAroundFeaturePoint,

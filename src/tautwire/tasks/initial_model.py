@@ -14,9 +14,10 @@ from numpy.typing import NDArray
 from tautwire.errors import InvalidArgumentError
 from tautwire.model import FeatureKind, PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
+from tautwire.primitives.context import ClipInfo
 from tautwire.robot import Arm
 from tautwire.scenario import Scenario
-from tautwire.scenario.models import Anchor, CableSpec, Peg
+from tautwire.scenario.models import Anchor, CableSpec, Clip, Peg
 
 FloatArray = NDArray[np.float64]
 
@@ -137,6 +138,11 @@ def initial_context(
         for f in scenario.board.fixtures
         if isinstance(f, Peg)
     }
+    clips = {
+        f.name: ClipInfo(np.asarray(f.position, dtype=float), float(f.yaw), float(f.push_force))
+        for f in scenario.board.fixtures
+        if isinstance(f, Clip)
+    }
     robot = scenario.robot
     return make_context(
         graph,
@@ -148,4 +154,5 @@ def initial_context(
         estimation_period=estimation_period,
         fixtures=fixtures,
         round_fixtures=round_fixtures,
+        clips=clips,
     )

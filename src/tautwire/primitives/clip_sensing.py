@@ -1,0 +1,101 @@
+"""Feeling a clip from the force: where the taut cable crosses a clip, and the snap.
+
+A taut cable pressed onto a clip bends over it, so the measured force at the
+gripper points at the bend: the line from the gripper along the tension
+direction crosses the clip's vertical at the height where the cable lies
+there. Before the snap that is on the jaws, a few millimetres above the
+seat; once the cable snaps in, it drops to the seat. This height, low-passed,
+is the clipping primitives' force signature of the snap, and (after lifting
+the gripper again) the proof that the cable stayed in.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+#: Low-pass weight of a new height sample (~0.05 s at 4 ms).
+SMOOTHING = 1.0 / 12.0
+#: The cable counts as seated within this height [m] above the seat.
+SEATED = 0.004
+
+
+def height_at_clip(p_gripper: FloatArray, direction: FloatArray, seat: FloatArray) -> float | None:
+    """Height [m] at which the tension line passes the clip's vertical axis.
+
+    Args:
+        p_gripper: Gripper position [m].  # (3,)
+        direction: Unit tension direction from the gripper (towards what the
+            cable bears on).  # (3,)
+        seat: The clip's seat [m].  # (3,)
+
+    Returns:
+        The height of the line's point nearest the seat's vertical, or None
+        when the line points away from the clip or is nearly vertical.
+    """
+    dx, dy = float(direction[0]), float(direction[1])
+    n2 = dx * dx + dy * dy
+    if n2 < 1e-6:
+        return None
+    lam = (float(seat[0] - p_gripper[0]) * dx + float(seat[1] - p_gripper[1]) * dy) / n2
+    if lam <= 0.0:
+        return None
+    return float(p_gripper[2] + lam * float(direction[2]))
+
+
+def push_tension(push_force: float, tension: float | None, force_limit: float) -> float:
+    """Tension [N] to keep while pushing into a clip that needs ``push_force`` [N].
+
+    Three times the push force (so that the bend needed, asin(P / f), stays
+    near 20 deg and the gripper need not go far below the clip), at least the
+    tension already set, at most 60 % of the force limit.
+    """
+    wanted = max(3.0 * push_force, tension or 0.0)
+    return float(min(wanted, 0.6 * force_limit))
+
+
+class ClipHeight:
+    """Low-passed height of the cable at a clip, from the measured force.
+
+    The cable pulled down towards the gripper bends where it leaves the
+    clip, at the end of the slot on the gripper's side: the height is taken
+    there (at the seat's centre the line would read high by the slope times
+    half the clip's length).
+
+    Args:
+        seat: The clip's seat [m].  # (3,)
+        slot: Unit direction of the slot.  # (3,)
+        half_length: Half the clip's length along the slot [m].
+    """
+
+    def __init__(self, seat: FloatArray, slot: FloatArray, half_length: float) -> None:
+        self.seat = np.asarray(seat, dtype=float)
+        self.slot = np.asarray(slot, dtype=float)
+        self.half_length = float(half_length)
+        self.height: float | None = None  # above the seat [m], low-passed
+
+    def update(self, p_gripper: FloatArray, direction: FloatArray, taut: bool) -> float | None:
+        """Add a sample; return the low-passed height [m] above the seat."""
+        if not taut:
+            return self.height
+        side = 1.0 if float((p_gripper - self.seat) @ self.slot) >= 0.0 else -1.0
+        exit_point = self.seat + side * self.half_length * self.slot
+        z = height_at_clip(p_gripper, direction, exit_point)
+        if z is None or not math.isfinite(z):
+            return self.height
+        h = z - float(self.seat[2])
+        self.height = h if self.height is None else self.height + SMOOTHING * (h - self.height)
+        return self.height
+
+    def reset(self) -> None:
+        """Forget the low-passed height."""
+        self.height = None
+
+    @property
+    def seated(self) -> bool:
+        """Whether the cable lies at the seat."""
+        return self.height is not None and self.height <= SEATED

@@ -1,0 +1,236 @@
+"""F - Single arm DLO Clipping: press the taut cable into a clip, pivoting about its contact."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tautwire.control import DualPose, Pose
+from tautwire.errors import InvalidArgumentError
+from tautwire.model.quaternion import multiply, rotate, shortest_arc
+from tautwire.model.vector3 import norm3
+from tautwire.primitives.clip_sensing import ClipHeight, push_tension
+from tautwire.primitives.context import ClipInfo, PrimitiveContext
+from tautwire.primitives.model_edits import add_point, drop_new_points, rescale_elasticity
+from tautwire.primitives.model_estimator import TensionState
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.robot import Arm, Command, Observation
+
+#: Height [m] above the seat at which the cable is brought over the clip.
+ABOVE = 0.015
+#: Rate [rad/s] at which the gripper pivots down about the clip while pushing.
+PUSH_RATE = 0.15
+#: Steepest angle [rad] of the cable below the clip before giving up.
+MAX_ANGLE = math.radians(60.0)
+#: Height [m] above the seat of the pivot: about the jaws' top.
+JAW_TOP = 0.008
+#: Lowest height [m] above the table the gripper may go.
+TABLE_CLEARANCE = 0.015
+#: Largest angle [rad] between the cable and the clip's slot.
+MAX_SLOT_ANGLE = math.radians(25.0)
+
+
+class SingleArmClipping(Primitive):
+    """Primitive F: clip the cable between a fixed point and the gripper.
+
+    The cable is taut from its contact c (an estimated or fixed point) to
+    the gripper. With D's force control along the cable, the gripper first
+    moves on the sphere about c (radius: what the tension leaves) until the
+    cable's straight line passes ``ABOVE`` over the clip's seat q, along the
+    slot; then it pivots down about c, lowering that line through the clip
+    at ``PUSH_SPEED`` with the tension raised to twice the clip's push force
+    (:func:`push_tension`). The snap is felt (:class:`ClipHeight`): the
+    force's line drops from the jaws to the seat. The gripper then returns
+    above the clip; if the force's line still bends down to the seat, the
+    cable is in. The model gets a fixed point at q.
+
+    Failure: ``not_clipped`` if no snap is felt down to ``MAX_DEPTH`` or the
+    cable came out when lifted; ``precondition`` if the clip is not between
+    the contact and the gripper or its slot is across the cable;
+    ``slipped`` if the cable goes slack; ``timeout``.
+
+    Args:
+        arm: The gripper that holds the cable (it carries the sensor).
+        clip: Name of the clip (the board design gives its seat and slot).
+        timeout: Longest run time [s].
+    """
+
+    name = "single_arm_clipping"
+    letter = "F"
+
+    def __init__(self, arm: Arm, clip: str, timeout: float = 20.0) -> None:
+        super().__init__(timeout)
+        if arm not in ("left", "right"):
+            raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
+        self.arm: Arm = arm
+        self.clip = clip
+        self.phase = "align"
+        self.angle = 0.0  # how far [rad] the gripper has pivoted below the clip
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Check the clip against the model; plan the pivot plane."""
+        info = ctx.clips.get(self.clip)
+        ctx.estimator.learn_elasticity = False
+        ctx.estimator.rotation = None
+        self.phase = "align"
+        self.angle = 0.0
+        self._angle0 = 0.0
+        self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
+        self._hold = current_pose(obs)
+        self._slack_since: float | None = None
+        if info is None:
+            self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
+            return
+        self.info: ClipInfo = info
+        self.sensing = ClipHeight(info.position, info.slot, 0.5 * info.length)
+        state = ctx.estimator.update(obs)
+        c = state.contact
+        self._contact = c.copy()
+        index = ctx.estimator.contact_index
+        self._contact_point = None if index is None else ctx.graph.points[index]
+        self._known = [id(p) for p in ctx.graph.points]
+        seat = info.position
+        along = seat - c
+        along[2] = 0.0
+        out = obs.gripper(self.arm).position - c
+        reach = float(np.hypot(out[0], out[1]))
+        if float(np.linalg.norm(along)) > reach - 0.02:
+            self.outcome = Outcome.failure(
+                "precondition", f"clip {self.clip} is not between the contact and the gripper"
+            )
+            return
+        angle = math.acos(
+            min(1.0, abs(float(along @ info.slot)) / max(float(np.linalg.norm(along)), 1e-9))
+        )
+        if angle > MAX_SLOT_ANGLE:
+            self.outcome = Outcome.failure(
+                "precondition",
+                f"the slot of {self.clip} is {math.degrees(angle):.0f} deg across the cable",
+            )
+            return
+        self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
+        self._base_force = ctx.tension if ctx.tension is not None else 2.0
+        self._since = obs.time
+
+    def _target(self, obs: Observation, state: TensionState) -> np.ndarray:
+        """The gripper's set point while aligning: on the line from c over the clip."""
+        c = self._contact
+        through = self.info.position + np.array([0.0, 0.0, ABOVE])
+        w = (through - c) / float(np.linalg.norm(through - c))
+        radius = float(np.linalg.norm(obs.gripper(self.arm).position - c))
+        target: np.ndarray = c + radius * w
+        return target
+
+    def _pivot(self, obs: Observation) -> np.ndarray:
+        """The set point while pushing: turned down by ``angle`` about the clip's exit.
+
+        Pivoting about the clip (not about the far contact) bends the cable
+        over the clip without moving the gripper away from it, so the bend
+        angle asin(P / f) is reached with the least descent.
+        """
+        me = obs.gripper(self.arm).position
+        offset = me - self._exit
+        ahead = float(offset @ self._out)
+        radius = math.hypot(ahead, float(offset[2]))
+        target: np.ndarray = self._exit + radius * (
+            math.cos(self.angle) * self._out - math.sin(self.angle) * np.array([0.0, 0.0, 1.0])
+        )
+        return target
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Align, push, verify; keep the tension throughout."""
+        state = ctx.estimator.update(obs)
+        if self.outcome.done:
+            return Command()
+        me = obs.gripper(self.arm)
+        height = self.sensing.update(me.position, state.direction, state.taut)
+        force = self._base_force
+        if self.phase == "align":
+            target = self._target(obs, state)
+            if float(np.linalg.norm(me.position - target)) < 0.003:
+                self.phase, self._since = "push", obs.time
+                out = me.position - self.info.position
+                out[2] = 0.0
+                self._out = out / max(float(np.linalg.norm(out)), 1e-9)
+                side = 1.0 if float(out @ self.info.slot) >= 0.0 else -1.0
+                self._exit = self.info.position + side * 0.5 * self.info.length * self.info.slot
+                self._exit[2] += JAW_TOP
+                offset = me.position - self._exit
+                self._angle0 = math.atan2(-float(offset[2]), float(offset @ self._out))
+                self.angle = self._angle0
+        elif self.phase == "push":
+            force = self.force
+            self.angle = self._angle0 + PUSH_RATE * (obs.time - self._since)
+            target = self._pivot(obs)
+            if self.angle > self._angle0 + 0.05 and self.sensing.seated:
+                self.phase, self._since = "lift", obs.time
+            elif self.angle > MAX_ANGLE or me.position[2] < self.floor:
+                where = "the table" if me.position[2] < self.floor else "the steepest bend"
+                self.outcome = Outcome.failure(
+                    "not_clipped",
+                    f"no snap felt into {self.clip} down to {where}"
+                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat): hold the cable"
+                    " closer to the clip or tension it more",
+                )
+        else:  # lift back over the clip and feel whether the cable stayed in
+            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle0)
+            target = self._pivot(obs)
+            settled = obs.time - self._since > 0.3
+            if settled and self.angle <= self._angle0 and norm3(me.position - target) < 0.003:
+                self._verify(ctx, height)
+        self._check_slack(obs, state.tension, force)
+        q_target = me.orientation
+        if state.taut:
+            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
+            q_target = multiply(shortest_arc(x_axis, -state.direction), me.orientation)
+        mine = Pose(target, q_target)
+        start = self._hold
+        desired = DualPose(mine, start.right) if self.arm == "left" else DualPose(start.left, mine)
+        left = self.arm == "left"
+        twist = ctx.controller(
+            current_pose(obs),
+            desired,
+            (force, None) if left else (None, force),
+            (state.force, None) if left else (None, state.force),
+            ctx.estimator.elasticity.k_hat,
+            (state.direction, None) if left else (None, state.direction),
+        )
+        return Command(twist)
+
+    def _check_slack(self, obs: Observation, tension: float, force: float) -> None:
+        if tension < 0.2 * force:
+            if self._slack_since is None:
+                self._slack_since = obs.time
+            elif obs.time - self._slack_since > 1.0:
+                self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
+        else:
+            self._slack_since = None
+
+    def _verify(self, ctx: PrimitiveContext, height: float | None) -> None:
+        if not self.sensing.seated:
+            self.outcome = Outcome.failure(
+                "not_clipped",
+                f"the cable left {self.clip} when lifted"
+                f" ({1e3 * (height or 0.0):.1f} mm above its seat)",
+            )
+            return
+        est = ctx.estimator
+        drop_new_points(ctx.graph, self._known)
+        g = est.gripper_index
+        c = next((i for i, p in enumerate(ctx.graph.points) if p is self._contact_point), None)
+        s = ctx.graph.arc_lengths()
+        s_c = float(s[c]) if c is not None else 0.0
+        old = abs(float(s[g]) - s_c)
+        arc = s_c + float(np.linalg.norm(self.info.position - self._contact)) * (
+            1.0 if c is None or c < g else -1.0
+        )
+        add_point(ctx.graph, arc, self.info.position, "fixed", self.clip)
+        new = abs(float(ctx.graph.arc_lengths()[est.gripper_index]) - arc)
+        if new > 0.0:
+            rescale_elasticity(est, old / new)
+        self.outcome = Outcome.success(
+            f"clipped into {self.clip} (cable {1e3 * (height or 0.0):.1f} mm above the seat)"
+        )
