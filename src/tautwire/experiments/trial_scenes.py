@@ -459,7 +459,7 @@ def scene_f(seed: int) -> TrialScene:
             [
                 float(draw.rng.uniform(0.0, 0.35)),
                 float(draw.rng.uniform(-0.3, 0.3)),
-                float(draw.rng.uniform(0.12, 0.2)),
+                float(draw.rng.uniform(0.15, 0.25)),
             ]
         )
         beyond = float(draw.rng.uniform(0.06, 0.12))
@@ -501,10 +501,51 @@ def scene_f(seed: int) -> TrialScene:
     return TrialScene("F", scenario, draw.inputs)
 
 
+def scene_c(seed: int) -> TrialScene:
+    """C: tension (A), then press the cable between the grippers into a clip below them."""
+    draw = _Draw(seed)
+    push = draw.uniform("push_force", 1.0, 4.0)
+    seat = np.array(
+        [
+            draw.uniform("clip_x", 0.15, 0.55),
+            draw.uniform("clip_y", -0.3, 0.3),
+            draw.uniform("clip_z", 0.1, 0.2),
+        ]
+    )
+    slot = draw.uniform("clip_yaw", -math.pi, math.pi)
+    cable = _cable(draw)
+    length = float(cable["length"])
+    span = draw.uniform("span", 0.12, 0.3)
+    s1 = draw.uniform("hold_left", 0.05, length - span - 0.05)
+    slack = draw.uniform("slack", 0.9, 0.97)
+    yaw = slot + draw.uniform("yaw_offset", -0.5, 0.5)
+    u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    middle = seat + np.array(
+        [draw.uniform("dx", -0.05, 0.05), draw.uniform("dy", -0.05, 0.05), 0.0]
+    )
+    middle[2] = seat[2] + draw.uniform("height", 0.05, 0.1)
+    left = middle - 0.5 * slack * span * u
+    right = middle + 0.5 * slack * span * u
+    draw.point("left", left)
+    draw.point("right", right)
+    cable.update(held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}])
+    force = draw.uniform("force", 1.5, 3.0)
+    scenario = _scenario(
+        "C",
+        seed,
+        _pair_grippers(left, right, u),
+        [{"name": "C1", "type": "clip", "position": list(seat), "yaw": slot, "push_force": push}],
+        cable,
+        [{"primitive": "A", "force": force}, {"primitive": "C", "clip": "C1"}],
+    )
+    return TrialScene("C", scenario, draw.inputs)
+
+
 #: Scene builders by letter.
 SCENES: dict[str, Callable[[int], TrialScene]] = {
     "A": scene_a,
     "B": scene_b,
+    "C": scene_c,
     "D": scene_d,
     "E": scene_e,
     "F": scene_f,

@@ -5,6 +5,7 @@ from __future__ import annotations
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.grasp_tensioned import GraspTensioned
 from tautwire.primitives.gripper_alignment import GripperAlignment
+from tautwire.primitives.parallel_clipping import ParallelClipping
 from tautwire.primitives.parallel_sliding import ParallelSliding
 from tautwire.primitives.parallel_tension import ParallelTension
 from tautwire.primitives.primitive import Primitive
@@ -19,6 +20,7 @@ PRIMITIVES: dict[str, type[Primitive]] = {
     for cls in (
         ParallelTension,
         ParallelSliding,
+        ParallelClipping,
         SingleArmTension,
         SingleArmSliding,
         SingleArmClipping,

@@ -1,0 +1,173 @@
+"""C - Parallel DLO Clipping: press the cable between the grippers into a clip."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tautwire.control import CoordinatedPose, Pose, coordinated_pose
+from tautwire.model.quaternion import orientation_along
+from tautwire.model.vector3 import norm3
+from tautwire.primitives.clip_sensing import ClipHeight, push_tension
+from tautwire.primitives.context import ClipInfo, PrimitiveContext
+from tautwire.primitives.model_edits import add_point, drop_new_points, rescale_elasticity
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.parallel_tension import held_between_grippers
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.robot import Command, Observation
+
+#: Height [m] above the seat at which the cable is brought over the clip.
+ABOVE = 0.015
+#: Speed [m/s] at which both grippers descend while pushing.
+PUSH_SPEED = 0.015
+#: Steepest angle [rad] of the cable on either side of the clip before giving up.
+MAX_ANGLE = math.radians(60.0)
+#: Lowest height [m] above the table the grippers may go.
+TABLE_CLEARANCE = 0.015
+
+
+class ParallelClipping(Primitive):
+    """Primitive C: both grippers hold the cable taut over a clip and push it in.
+
+    Coordinated hybrid control: the absolute pose brings the middle of the
+    cable between the grippers ``ABOVE`` over the clip's seat with the
+    cable along the slot; the grippers' distance is force-controlled (A's
+    tension, raised to three times the clip's push force while pushing:
+    :func:`push_tension`). The absolute pose then descends: the cable bends
+    over the clip at 2 f sin(alpha), until the snap is felt from the sensing
+    gripper's force line (:class:`ClipHeight`). The grippers rise again; if
+    the force line still bends down to the seat, the cable is in, and the
+    model gets a fixed point at the clip.
+
+    Failure: ``not_clipped`` if no snap is felt down to the steepest bend or
+    the table, or the cable came out when lifted (the paper's one clipping
+    failure: grippers too far apart for a steep enough bend);
+    ``precondition`` if the cable is not held by both grippers; ``slipped``;
+    ``timeout``.
+
+    Args:
+        clip: Name of the clip (the board design gives its seat and slot).
+        timeout: Longest run time [s].
+    """
+
+    name = "parallel_clipping"
+    letter = "C"
+
+    def __init__(self, clip: str, timeout: float = 25.0) -> None:
+        super().__init__(timeout)
+        self.clip = clip
+        self.phase = "align"
+        self.drop = 0.0  # how far [m] the grippers have descended below the align height
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Check the preconditions; plan the pose over the clip."""
+        ctx.estimator.learn_elasticity = False
+        ctx.estimator.rotation = None
+        self.phase = "align"
+        self.drop = 0.0
+        self._slack_since: float | None = None
+        info = ctx.clips.get(self.clip)
+        if info is None:
+            self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
+            return
+        if not held_between_grippers(ctx):
+            self.outcome = Outcome.failure(
+                "precondition", "parallel clipping needs the cable held by both grippers"
+            )
+            return
+        self.info: ClipInfo = info
+        self.sensing = ClipHeight(info.position, info.slot, 0.5 * info.length)
+        self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
+        self._base_force = ctx.tension if ctx.tension is not None else 2.0
+        self._known = [id(p) for p in ctx.graph.points]
+        # the cable along the slot, each gripper staying on its side
+        rel = obs.left.position - obs.right.position
+        sense = 1.0 if float(rel @ info.slot) >= 0.0 else -1.0
+        self._rel_dir = sense * info.slot  # p_left - p_right direction
+        self._q = orientation_along(-self._rel_dir)  # x from left towards right
+        self._since = obs.time
+
+    def _desired(self, obs: Observation) -> CoordinatedPose:
+        distance = float(np.linalg.norm(obs.left.position - obs.right.position))
+        centre = self.info.position + np.array([0.0, 0.0, ABOVE - self.drop])
+        return CoordinatedPose(
+            Pose(centre, self._q), Pose(distance * self._rel_dir, np.array([1.0, 0.0, 0.0, 0.0]))
+        )
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Align, push, lift, verify; the distance under tension control throughout."""
+        state = ctx.estimator.update(obs)
+        if self.outcome.done:
+            return Command()
+        sensor = obs.gripper(ctx.estimator.arm)
+        height = self.sensing.update(sensor.position, state.direction, state.taut)
+        force = self._base_force
+        now = coordinated_pose(current_pose(obs))
+        if self.phase == "align":
+            if norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003:
+                self.phase, self._since = "push", obs.time
+        elif self.phase == "push":
+            force = self.force
+            self.drop = PUSH_SPEED * (obs.time - self._since)
+            half = 0.5 * float(np.linalg.norm(obs.left.position - obs.right.position))
+            angle = math.atan2(self.drop - ABOVE, max(half, 1e-3))
+            low = min(obs.left.position[2], obs.right.position[2]) < TABLE_CLEARANCE
+            if self.drop > ABOVE and self.sensing.seated:
+                self.phase, self._since = "lift", obs.time
+            elif angle > MAX_ANGLE or low:
+                where = "the table" if low else "the steepest bend"
+                self.outcome = Outcome.failure(
+                    "not_clipped",
+                    f"no snap felt into {self.clip} down to {where}"
+                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat): hold the cable"
+                    " with the grippers closer together or tension it more",
+                )
+        else:  # lift back over the clip and feel whether the cable stayed in
+            self.drop = max(self.drop - 2.0 * PUSH_SPEED * ctx.control_period, 0.0)
+            reached = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
+            if self.drop <= 0.0 and reached and obs.time - self._since > 0.3:
+                self._verify(ctx, height, sensor.position)
+        self._check_slack(obs, state.tension, force)
+        return Command(
+            ctx.controller.coordinated(
+                current_pose(obs),
+                self._desired(obs),
+                force,
+                state.tension,
+                ctx.estimator.elasticity.k_hat,
+            )
+        )
+
+    def _check_slack(self, obs: Observation, tension: float, force: float) -> None:
+        if tension < 0.2 * force:
+            if self._slack_since is None:
+                self._slack_since = obs.time
+            elif obs.time - self._slack_since > 1.0:
+                self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
+        else:
+            self._slack_since = None
+
+    def _verify(self, ctx: PrimitiveContext, height: float | None, p_sensor: np.ndarray) -> None:
+        if not self.sensing.seated:
+            self.outcome = Outcome.failure(
+                "not_clipped",
+                f"the cable left {self.clip} when lifted"
+                f" ({1e3 * (height or 0.0):.1f} mm above its seat)",
+            )
+            return
+        est = ctx.estimator
+        drop_new_points(ctx.graph, self._known)
+        g, c = est.gripper_index, est.contact_index
+        s = ctx.graph.arc_lengths()
+        old = abs(float(s[g]) - float(s[c or 0]))
+        towards = 1.0 if c is not None and c > g else -1.0
+        arc = float(s[g]) + towards * float(np.linalg.norm(self.info.position - p_sensor))
+        add_point(ctx.graph, arc, self.info.position, "fixed", self.clip)
+        new = abs(float(ctx.graph.arc_lengths()[est.gripper_index]) - arc)
+        if new > 0.0:
+            rescale_elasticity(est, old / new)
+        self.outcome = Outcome.success(
+            f"clipped into {self.clip} (cable {1e3 * (height or 0.0):.1f} mm above the seat)"
+        )
