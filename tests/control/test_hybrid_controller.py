@@ -206,3 +206,27 @@ def test_parallel_tension_closed_loop() -> None:
     # the grippers stay in line (only the length along the cable changed)
     rel = now.relative.position / np.linalg.norm(now.relative.position)
     np.testing.assert_allclose(rel, [0.0, 1.0, 0.0], atol=1e-3)
+
+
+def test_coordinated_force_control_acts_on_the_distance_only() -> None:
+    import numpy as np
+
+    from tautwire.control import (
+        AdaptiveForceController,
+        DualPose,
+        HybridController,
+        MotionController,
+        Pose,
+        coordinated_pose,
+    )
+
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    current = DualPose(Pose(np.array([0.0, 0.1, 0.2]), q), Pose(np.array([0.0, -0.1, 0.2]), q))
+    ctrl = HybridController(MotionController(), AdaptiveForceController(bandwidth=5.0))
+    twist = ctrl.coordinated(current, coordinated_pose(current), 3.0, 2.0, 100.0)
+    v_left, v_right = twist[0:3], twist[6:9]
+    assert np.allclose(v_left + v_right, 0.0)  # the absolute pose holds
+    speed = 5.0 / 100.0 * (3.0 - 2.0)
+    assert np.allclose(v_left - v_right, [0.0, speed, 0.0])  # the grippers part
+    slide = ctrl.coordinated(current, coordinated_pose(current), None, 0.0, relative_speed=0.02)
+    assert np.allclose(slide[0:3] - slide[6:9], [0.0, 0.02, 0.0])

@@ -1,0 +1,39 @@
+import numpy as np
+import pytest
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.model import PathGraph
+from tautwire.primitives.model_edits import add_point, drop_new_points, move_hold
+
+
+def _graph() -> PathGraph:
+    g = PathGraph.from_positions(
+        [[0.0, 0, 0], [0.3, 0, 0], [0.5, 0, 0]],
+        mass_per_length=0.03,
+        kinds=["fixed", "gripper", "free"],
+        labels=["A1", "left", "end"],
+    )
+    for e in g.edges:
+        e.stiffness = 100.0 * 0.5 / e.length  # EA = 50 N
+    return g
+
+
+def test_sliding_moves_the_hold_and_keeps_ea() -> None:
+    g = _graph()
+    move_hold(g, 1, 0.05)
+    assert g.edges[0].length == pytest.approx(0.35) and g.edges[1].length == pytest.approx(0.15)
+    assert [e.stiffness * e.length for e in g.edges] == pytest.approx([50.0, 50.0])
+    assert g.total_length == pytest.approx(0.5)
+    with pytest.raises(InvalidArgumentError, match="beyond the gripper"):
+        move_hold(g, 1, 0.2)
+
+
+def test_added_points_and_dropped_estimates() -> None:
+    g = _graph()
+    known = [id(p) for p in g.points]
+    i = add_point(g, 0.1, np.array([0.1, 0.0, -0.01]), "contact", "estimated")
+    assert g.points[i].kind == "contact" and len(g.points) == 4
+    drop_new_points(g, known)
+    assert len(g.points) == 3
+    j = add_point(g, 0.2, np.array([0.2, 0.0, 0.0]), "fixed", "C1")
+    assert g.points[j].label == "C1" and g.arc_lengths()[j] == pytest.approx(0.2)
