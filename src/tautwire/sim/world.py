@@ -12,6 +12,7 @@ transmits, and guards against divergence. Robots
 from __future__ import annotations
 
 import logging
+import re
 from dataclasses import dataclass
 
 import mujoco
@@ -32,11 +33,8 @@ from tautwire.sim.transmitted_wrench import free_joint_wrench
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
 
-# mjWARN_INERTIA is not among them: MuJoCo 4 also raises it when the flex's
-# M+K solve stops at a relative residual of ~1e-8 (stiff, long cables), which
-# is converged for this purpose; a real blow-up still shows as NaN, a bad
-# qacc or a speed beyond ``max_speed``.
 _BAD_WARNINGS = (
+    mujoco.mjtWarning.mjWARN_INERTIA,
     mujoco.mjtWarning.mjWARN_BADQACC,
     mujoco.mjtWarning.mjWARN_BADQPOS,
     mujoco.mjtWarning.mjWARN_BADQVEL,
@@ -46,8 +44,27 @@ _BAD_WARNINGS = (
 _LOG = logging.getLogger("tautwire.sim")
 
 
+#: MuJoCo 4 also warns mjWARN_INERTIA when the flex's M+K solve stops at a
+#: relative residual such as 1e-8 (stiff, long cables): converged for this
+#: purpose. MuJoCo prints a warning type only the first time in a world; when
+#: that first report names a converged residual, the world's inertia warnings
+#: are not counted as divergence (a failed solve, with a larger residual or
+#: none given, is). A real blow-up still shows as NaN, a bad qacc or a speed
+#: beyond ``max_speed``. The verdict is per process: one world steps at a time.
+CONVERGED_RESIDUAL = 1e-6
+_RESIDUAL = re.compile(r"relative residual of ([0-9.eE+-]+)")
+_inertia_converged: bool | None = None
+
+
 def _log_warning(message: str) -> None:
     """MuJoCo's runtime warnings go to the log (stderr), never to stdout."""
+    global _inertia_converged
+    match = _RESIDUAL.search(message)
+    if match is not None and _inertia_converged is None:
+        try:
+            _inertia_converged = float(match.group(1)) <= CONVERGED_RESIDUAL
+        except ValueError:
+            _inertia_converged = False
     _LOG.warning("MuJoCo: %s", message.strip())
 
 
@@ -179,6 +196,8 @@ class SimWorld:
         }
         self._max_force = 0.0
         self._warnings = 0
+        global _inertia_converged
+        _inertia_converged = None  # this world's first inertia report decides
         self._t0 = 0.0
         self._damping_time = opt.cable_damping_time
         # open every gripper, then grasp where the spec says
@@ -477,7 +496,11 @@ class SimWorld:
 
     def _check(self) -> None:
         d = self._data
-        bad = sum(d.warning[int(w)].number for w in _BAD_WARNINGS)
+        bad = sum(
+            d.warning[int(w)].number
+            for w in _BAD_WARNINGS
+            if not (w == mujoco.mjtWarning.mjWARN_INERTIA and _inertia_converged)
+        )
         speed = float(np.max(np.abs(d.qvel[self._cable_dofs]))) if self._cable_dofs.size else 0.0
         if bad > self._warnings or not np.isfinite(speed) or speed > self._options.max_speed:
             self._warnings = bad
