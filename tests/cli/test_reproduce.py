@@ -30,3 +30,71 @@ def test_fig5b_files_and_convergence(tmp_path) -> None:  # type: ignore[no-untyp
     assert result["run"]["success"]
     for ext in ("png", "csv", "json"):
         assert (tmp_path / f"fig5b.{ext}").stat().st_size > 100
+
+
+@pytest.mark.slow
+def test_table1_small_real_campaign(tmp_path, capsys: pytest.CaptureFixture[str]) -> None:  # type: ignore[no-untyped-def]
+    import csv
+    import json
+
+    args = ["--trials", "1", "--letters", "DI", "--workers", "2", "--out", str(tmp_path)]
+    assert main(["reproduce", "table1", *args, "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)  # stdout holds the JSON object only
+    assert (report["finished"], report["planned"], report["interrupted"]) == (2, 2, False)
+    assert (report["backend"], report["workers"], report["seed"]) == ("local", 2, 0)
+    assert [p["letter"] for p in report["primitives"]] == ["D", "I"]
+    assert all(p["trials"] == 1 for p in report["primitives"])
+    assert json.loads((tmp_path / "table1.json").read_text()) == report
+    with (tmp_path / "table1_trials.csv").open(newline="") as fh:
+        trials = list(csv.DictReader(fh))
+    assert [(t["letter"], t["index"]) for t in trials] == [("D", "0"), ("I", "0")]
+    assert {"input.stiffness", "input.length", "input.angle"} <= set(trials[0])
+    for t in trials:
+        assert t["outcome"] in ("success", "failure")
+        assert (t["cause"] == "") == (t["outcome"] == "success")
+    md = (tmp_path / "table1.md").read_text()
+    assert "| Single arm DLO Tension | D | 1 |" in md
+    assert "| Rotate Around Feature Point | I | 1 |" in md
+    assert "| **Total** |  | 2 |" in md
+    assert "2 of 2 trials finished" in md
+
+
+def test_table1_reruns_one_trial(capsys: pytest.CaptureFixture[str]) -> None:
+    import json
+
+    from tautwire.experiments.trial import trial_seed
+
+    assert main(["reproduce", "table1", "--only", "A:4", "--seed", "2", "--json"]) == 0
+    (result,) = json.loads(capsys.readouterr().out)
+    assert (result["letter"], result["index"], result["seed"]) == ("A", 4, trial_seed(2, "A", 4))
+    assert result["outcome"] in ("success", "failure")
+
+
+@pytest.mark.parametrize(
+    ("args", "status", "words"),
+    [
+        (["table1", "--letters", "DX"], 1, "no primitive letter X"),
+        (["table1", "--trials", "0"], 2, "--trials"),
+        (["table1", "--backend", "slurm"], 2, "--backend"),
+        (["table1", "--only", "D17"], 1, "LETTER:INDEX"),
+        (["table1", "--address", "ray://x:10001"], 1, "--backend ray"),
+        (["fig5a", "--trials", "3"], 1, "--trials: only for table1"),
+    ],
+)
+def test_table1_bad_arguments_are_one_line(
+    args: list[str], status: int, words: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["reproduce", *args]) == status
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0]
+
+
+def test_table1_ray_backend_without_ray_names_the_extra(
+    tmp_path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str]
+) -> None:  # type: ignore[no-untyped-def]
+    import sys
+
+    monkeypatch.setitem(sys.modules, "ray", None)
+    args = ["table1", "--backend", "ray", "--trials", "1", "--letters", "D", "--out", str(tmp_path)]
+    assert main(["reproduce", *args]) == 1
+    assert "pip install 'tautwire[ray]'" in capsys.readouterr().err

@@ -9,6 +9,15 @@ from typing import Any
 
 import click
 from rich.console import Console
+from rich.progress import (
+    BarColumn,
+    MofNCompleteColumn,
+    Progress,
+    TextColumn,
+    TimeElapsedColumn,
+    TimeRemainingColumn,
+)
+from rich.table import Table
 
 from tautwire.errors import InvalidArgumentError
 
@@ -31,7 +40,11 @@ def _fig5c(out: Path, seed: int) -> dict[str, Any]:
     return reproduce_fig5c(out, seed)
 
 
-#: What can be reproduced so far, by name.
+#: Table I's campaign by default: trials per primitive, and trials at a time.
+TABLE1_TRIALS = 100
+TABLE1_WORKERS = 2
+
+#: What can be reproduced so far, by name (besides table1, which takes more options).
 REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
     "fig5a": _fig5a,
     "fig5b": _fig5b,
@@ -50,13 +63,87 @@ REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
 )
 @click.option("--seed", type=int, default=0, show_default=True, help="random seed")
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
-def reproduce(name: str, out_dir: str | None, seed: int, as_json: bool) -> int:
-    """Regenerate the paper's figure or table NAME (fig5a, fig5b, fig5c)."""
-    if name not in REPRODUCTIONS:
+@click.option(
+    "--trials",
+    type=click.IntRange(min=1),
+    default=None,
+    help=f"table1: trials per primitive  [default: {TABLE1_TRIALS}]",
+)
+@click.option(
+    "--workers",
+    type=click.IntRange(min=1),
+    default=None,
+    help=f"table1: trials run at a time  [default: {TABLE1_WORKERS}]",
+)
+@click.option(
+    "--backend",
+    type=click.Choice(["local", "serial", "ray"]),
+    default=None,
+    help="table1: where trials run: local processes, this process, or Ray "
+    "(pip install 'tautwire[ray]')  [default: local]",
+)
+@click.option(
+    "--address", default=None, help="table1: the Ray cluster to join (default: a local Ray)"
+)
+@click.option(
+    "--letters", default=None, help="table1: the primitives to run, e.g. DI  [default: A-I]"
+)
+@click.option(
+    "--only",
+    default=None,
+    metavar="L:I[,L:I...]",
+    help="table1: rerun these trials alone in this process (e.g. D:17) and print them",
+)
+@click.option(
+    "--resume",
+    is_flag=True,
+    help="table1: reuse the trials of the same campaign already in the output folder",
+)
+def reproduce(
+    name: str,
+    out_dir: str | None,
+    seed: int,
+    as_json: bool,
+    trials: int | None,
+    workers: int | None,
+    backend: str | None,
+    address: str | None,
+    letters: str | None,
+    only: str | None,
+    resume: bool,
+) -> int:
+    """Regenerate the paper's figure or table NAME (fig5a, fig5b, fig5c, table1)."""
+    if name not in REPRODUCTIONS and name != "table1":
         raise InvalidArgumentError(
-            f"no reproduction named {name!r}; available: {', '.join(REPRODUCTIONS)}"
+            f"no reproduction named {name!r}; available: {', '.join([*REPRODUCTIONS, 'table1'])}"
         )
     out = Path(out_dir) if out_dir is not None else Path("out") / name
+    if name == "table1":
+        if only is not None:
+            return _table1_only(only, seed, as_json)
+        return _table1(
+            out,
+            seed,
+            as_json,
+            trials=TABLE1_TRIALS if trials is None else trials,
+            workers=TABLE1_WORKERS if workers is None else workers,
+            backend=backend or "local",
+            address=address,
+            letters=letters,
+            resume=resume,
+        )
+    campaign_options = {
+        "--trials": trials,
+        "--workers": workers,
+        "--backend": backend,
+        "--address": address,
+        "--letters": letters,
+        "--only": only,
+        "--resume": resume or None,
+    }
+    given = [option for option, value in campaign_options.items() if value is not None]
+    if given:
+        raise InvalidArgumentError(f"{', '.join(given)}: only for table1, not {name}")
     with Console(stderr=True).status(f"reproducing {name} ..."):
         result = REPRODUCTIONS[name](out, seed)
     if as_json:
@@ -64,4 +151,103 @@ def reproduce(name: str, out_dir: str | None, seed: int, as_json: bool) -> int:
     else:
         Console().print_json(json.dumps(result))
         Console().print(f"written under {out}/")
+    return 0
+
+
+def _table1(
+    out: Path,
+    seed: int,
+    as_json: bool,
+    *,
+    trials: int,
+    workers: int,
+    backend: str,
+    address: str | None,
+    letters: str | None,
+    resume: bool,
+) -> int:
+    """Run the Table I campaign with a progress bar on stderr; 130 if interrupted."""
+    from tautwire.experiments.table1 import Progress as CampaignProgress
+    from tautwire.experiments.table1 import parse_letters, reproduce_table1
+    from tautwire.experiments.trial import LETTERS
+
+    chosen = parse_letters(letters) if letters is not None else LETTERS
+    if address is not None and backend != "ray":
+        raise InvalidArgumentError("--address is for --backend ray only")
+    err = Console(stderr=True)
+    columns = (
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TextColumn("{task.fields[failed]} failed"),
+        TimeElapsedColumn(),
+        TextColumn("ETA"),
+        TimeRemainingColumn(),
+    )
+    with Progress(*columns, console=err) as bar:
+        task = bar.add_task(f"table1 ({backend})", total=None, failed=0)
+
+        def show(state: CampaignProgress) -> None:
+            bar.update(task, completed=state.finished, total=state.planned, failed=state.failures)
+
+        report = reproduce_table1(
+            trials, workers, seed, out, backend, chosen, show, address=address, resume=resume
+        )
+    if as_json:
+        click.echo(json.dumps(report, indent=2))
+    else:
+        Console().print(_table1_table(report))
+        Console().print(f"written under {out}/")
+    if report["interrupted"]:
+        click.echo(
+            f"tautwire: interrupted: {report['finished']} of {report['planned']} trials "
+            f"finished; their results are written under {out}/",
+            err=True,
+        )
+        return 130
+    return 0
+
+
+def _table1_table(report: dict[str, Any]) -> Table:
+    """The summary of a Table I report as a rich table."""
+    table = Table(
+        title=f"Table I: {report['finished']} of {report['planned']} trials, "
+        f"{report['wall_time']:.1f} s on {report['workers']} workers ({report['backend']})"
+    )
+    for column in ("primitive", "trials", "failed", "causes", "max force [N]", "paper"):
+        table.add_column(column, justify="left" if column in ("primitive", "causes") else "right")
+    total = {"name": "Total", "letter": "", **report["total"]}
+    for row in [*report["primitives"], total]:
+        causes = ", ".join(f"{c} {n}" for c, n in row["causes"].items()) or "-"
+        force = "-" if row["max_force"] is None else f"{row['max_force']:.1f}"
+        table.add_row(
+            f"{row['letter']} {row['name']}".strip(),
+            str(row["trials"]),
+            str(row["failures"]),
+            causes,
+            force,
+            f"{row['paper_failures']}/{row['paper_trials']}",
+        )
+    return table
+
+
+def _table1_only(only: str, seed: int, as_json: bool) -> int:
+    """Rerun single trials of the Table I campaign with ``seed``; print their results."""
+    from tautwire.experiments.table1 import parse_only, rerun_trials
+
+    specs = parse_only(only, seed)
+    with Console(stderr=True).status(f"rerunning {only} ..."):
+        results = rerun_trials(specs)
+    if as_json:
+        click.echo(json.dumps([r.to_dict() for r in results], indent=2))
+        return 0
+    out = Console()
+    for r in results:
+        outcome = r.outcome + (f" ({r.cause})" if r.cause else "")
+        out.print(
+            f"{r.letter}:{r.index} {r.name} seed {r.seed}: {outcome}, "
+            f"max force {r.max_force:.2f} N, {r.sim_time:.1f} s simulated in {r.wall_time:.1f} s"
+        )
+        out.print(f"  {r.detail}")
+        out.print(f"  inputs: {json.dumps(r.inputs)}")
     return 0
