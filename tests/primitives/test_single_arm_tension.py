@@ -3,7 +3,7 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives import SingleArmTension
-from tautwire.tasks import run_step
+from tautwire.tasks import TickRecord, run_step
 from tests.primitives.conftest import CONTACT, GRIPPER, context
 from tests.primitives.spring_robot import SpringCableRobot
 
@@ -28,6 +28,34 @@ def test_learns_the_stiffness_while_tensioning() -> None:
     assert ctx.estimator.elasticity.k_hat == pytest.approx(200.0, rel=0.2)
 
 
+def test_learns_only_near_the_set_point() -> None:
+    # pulled from 2 cm of slack, the estimate must not fit the slack's samples
+    robot = SpringCableRobot(CONTACT, GRIPPER, 500.0, slack=0.02, seed=5)
+    ctx = context(k_initial=50.0)
+    step = SingleArmTension("left", 3.0, duration=2.0)
+    learnt_while_far = []
+
+    def watch(rec: TickRecord) -> None:
+        state = ctx.estimator.state
+        assert state is not None
+        if state.tension < 2.0:
+            learnt_while_far.append(ctx.estimator.learn_elasticity)
+
+    report = run_step(robot, step, ctx, on_tick=watch)
+    assert report.success
+    assert learnt_while_far and not any(learnt_while_far[:10])
+    assert ctx.estimator.elasticity.k_hat == pytest.approx(500.0, rel=0.1)
+
+
+def test_the_set_point_swings_by_the_excitation() -> None:
+    step = SingleArmTension("left", 2.0, excitation=0.05, excitation_period=2.0)
+    assert step.set_point(0.0) == pytest.approx(2.0)
+    assert step.set_point(0.5) == pytest.approx(2.1)
+    assert step.set_point(1.5) == pytest.approx(1.9)
+    assert SingleArmTension("left", 2.0, excitation=0.0).set_point(0.5) == 2.0
+    assert SingleArmTension("left", 2.0, tolerance=0.04).excitation == pytest.approx(0.02)
+
+
 def test_no_contact_when_nothing_holds_the_cable() -> None:
     robot = SpringCableRobot(CONTACT, GRIPPER, 100.0, slack=10.0, seed=1)  # never taut
     report = run_step(robot, SingleArmTension("left", 3.0), context())
@@ -45,6 +73,10 @@ def test_arguments_are_checked() -> None:
         SingleArmTension("middle", 3.0)  # type: ignore[arg-type]
     with pytest.raises(InvalidArgumentError):
         SingleArmTension("left", -1.0)
+    with pytest.raises(InvalidArgumentError):
+        SingleArmTension("left", 3.0, excitation=0.1)  # not inside the 10 % tolerance
+    with pytest.raises(InvalidArgumentError):
+        SingleArmTension("left", 3.0, excitation_period=0.0)
 
 
 def test_deterministic() -> None:

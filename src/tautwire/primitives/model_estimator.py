@@ -28,6 +28,7 @@ from numpy.typing import NDArray
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
 from tautwire.model import FeaturePoint, PathGraph
+from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.robot import Arm, Observation
@@ -233,8 +234,9 @@ class ModelEstimator:
             c = self._contact_index(g)
         if taut and self.learn_elasticity:
             # the length's changes are the gripper's motion along the cable,
-            # whatever error the contact position still has
-            self.elasticity.update(tension, span)
+            # whatever error the contact position still has; the cable is
+            # longer than the chord by its sag, which shrinks as it tightens
+            self.elasticity.update(tension, span + sag_excess_length(chord, tension, rho))
         self.state = TensionState(tension, direction, f, f_raw, contact, span, taut)
         self._update_graph(obs, g, c)
         return self.state
