@@ -278,9 +278,13 @@ def scene_b(seed: int) -> TrialScene:
     draw = _Draw(seed)
     left, right, u, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3)
     force = draw.uniform("force", 1.5, 3.0)
-    slide_arm = draw.choice("slide_arm", ("left", "right"))
     holds = cable["held_by"]
-    tail = holds[0]["at"] if slide_arm == "left" else cable["length"] - holds[1]["at"]
+    tails = {"left": holds[0]["at"], "right": cable["length"] - holds[1]["at"]}
+    slide_arm = draw.choice("slide_arm", ("left", "right"))
+    if tails[slide_arm] < 0.1:  # the cable must have room to slide through it
+        slide_arm = max(tails, key=lambda arm: tails[arm])
+        draw.inputs["slide_arm"] = slide_arm
+    tail = tails[slide_arm]
     distance = draw.uniform("distance", 0.05, max(0.0501, min(0.15, tail - 0.05)))
     friction = draw.uniform("friction_force", 1.0, 2.5)
     scenario = _scenario(
