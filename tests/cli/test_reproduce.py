@@ -65,7 +65,9 @@ def test_table1_reruns_one_trial(capsys: pytest.CaptureFixture[str]) -> None:
     from tautwire.experiments.trial import trial_seed
 
     assert main(["reproduce", "table1", "--only", "A:4", "--seed", "2", "--json"]) == 0
-    (result,) = json.loads(capsys.readouterr().out)
+    data = json.loads(capsys.readouterr().out)
+    assert data["seed"] == 2
+    (result,) = data["trials"]
     assert (result["letter"], result["index"], result["seed"]) == ("A", 4, trial_seed(2, "A", 4))
     assert result["outcome"] in ("success", "failure")
 
@@ -76,6 +78,7 @@ def test_table1_reruns_one_trial(capsys: pytest.CaptureFixture[str]) -> None:
         (["table1", "--letters", "DX"], 1, "no primitive letter X"),
         (["table1", "--trials", "0"], 2, "--trials"),
         (["table1", "--backend", "slurm"], 2, "--backend"),
+        (["table1", "--trial-timeout", "0"], 2, "--trial-timeout"),
         (["table1", "--only", "D17"], 1, "LETTER:INDEX"),
         (["table1", "--address", "ray://x:10001"], 1, "--backend ray"),
         (["fig5a", "--trials", "3"], 1, "--trials: only for table1"),

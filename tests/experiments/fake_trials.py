@@ -84,3 +84,10 @@ def slow_trial(spec: TrialSpec) -> TrialResult:
     """quick_trial after a fifth of a second (long enough to interrupt a campaign)."""
     time.sleep(0.2)
     return quick_trial(spec)
+
+
+def hanging_trial(spec: TrialSpec) -> TrialResult:
+    """D:1 never returns (well, after ten minutes); the others are quick_trial."""
+    if (spec.letter, spec.index) == ("D", 1):
+        time.sleep(600.0)
+    return quick_trial(spec)

@@ -76,6 +76,12 @@ def test_a_worker_that_dies_costs_only_its_trial() -> None:
     assert others == [fake_trials.quick_trial(TrialSpec(r.letter, r.index, r.seed)) for r in others]
 
 
+def test_a_trial_past_its_timeout_is_stopped_and_the_rest_finish() -> None:
+    campaign = run_campaign(specs("D", 4), fake_trials.hanging_trial, workers=2, trial_timeout=2.0)
+    assert [r.cause for r in campaign.results] == [None, "hung", "timeout", None]
+    assert "no result after 2 s" in campaign.results[1].detail
+
+
 @pytest.mark.parametrize("backend", ["serial", "local"])
 def test_an_interrupt_keeps_the_finished_trials(backend: str) -> None:
     seen: list[TrialResult] = []
@@ -106,6 +112,8 @@ def test_bad_arguments_are_refused() -> None:
         run_campaign(specs(), fake_trials.quick_trial, backend="cluster")
     with pytest.raises(InvalidArgumentError, match="at least 1"):
         run_campaign(specs(), fake_trials.quick_trial, workers=0)
+    with pytest.raises(InvalidArgumentError, match="trial_timeout must be positive"):
+        run_campaign(specs(), fake_trials.quick_trial, trial_timeout=0.0)
     with pytest.raises(InvalidArgumentError, match="D:0 is listed twice"):
         run_campaign(specs("D", 1) * 2, fake_trials.quick_trial)
 
@@ -148,3 +156,26 @@ def test_ray_backend_on_a_local_instance() -> None:
     assert by_key["D", 2].cause == "crashed"
     others = [r for k, r in by_key.items() if k not in (("D", 1), ("D", 2))]
     assert others == [fake_trials.quick_trial(TrialSpec(r.letter, r.index, r.seed)) for r in others]
+
+
+@pytest.mark.skipif(not HAS_RAY, reason="Ray is not installed (pip install 'tautwire[ray]')")
+def test_ray_backend_uses_a_running_instance_and_keeps_finished_trials_on_interrupt() -> None:
+    import ray
+
+    seen: list[TrialResult] = []
+
+    def stop_after_two(result: TrialResult) -> None:
+        seen.append(result)
+        if len(seen) == 2:
+            raise KeyboardInterrupt
+
+    ray.init(num_cpus=2, include_dashboard=False)
+    try:
+        campaign = run_campaign(
+            specs("D", 8), fake_trials.slow_trial, backend="ray", on_result=stop_after_two
+        )
+        assert ray.is_initialized()  # not this campaign's to shut down
+    finally:
+        ray.shutdown()
+    assert campaign.interrupted and campaign.finished == 2 and campaign.planned == 8
+    assert sorted(keys(campaign.results)) == sorted(keys(seen))

@@ -43,6 +43,8 @@ def _fig5c(out: Path, seed: int) -> dict[str, Any]:
 #: Table I's campaign by default: trials per primitive, and trials at a time.
 TABLE1_TRIALS = 100
 TABLE1_WORKERS = 2
+#: Wall time [s] after which a trial of table1 is stopped as hung (a trial takes seconds).
+TABLE1_TRIAL_TIMEOUT = 600.0
 
 #: What can be reproduced so far, by name (besides table1, which takes more options).
 REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
@@ -95,6 +97,13 @@ REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
     help="table1: rerun these trials alone in this process (e.g. D:17) and print them",
 )
 @click.option(
+    "--trial-timeout",
+    type=click.FloatRange(min=0.0, min_open=True),
+    default=None,
+    help=f"table1, local backend: seconds after which a trial is stopped as hung  "
+    f"[default: {TABLE1_TRIAL_TIMEOUT:g}]",
+)
+@click.option(
     "--resume",
     is_flag=True,
     help="table1: reuse the trials of the same campaign already in the output folder",
@@ -110,6 +119,7 @@ def reproduce(
     address: str | None,
     letters: str | None,
     only: str | None,
+    trial_timeout: float | None,
     resume: bool,
 ) -> int:
     """Regenerate the paper's figure or table NAME (fig5a, fig5b, fig5c, table1)."""
@@ -131,6 +141,7 @@ def reproduce(
             address=address,
             letters=letters,
             resume=resume,
+            trial_timeout=TABLE1_TRIAL_TIMEOUT if trial_timeout is None else trial_timeout,
         )
     campaign_options = {
         "--trials": trials,
@@ -139,6 +150,7 @@ def reproduce(
         "--address": address,
         "--letters": letters,
         "--only": only,
+        "--trial-timeout": trial_timeout,
         "--resume": resume or None,
     }
     given = [option for option, value in campaign_options.items() if value is not None]
@@ -165,6 +177,7 @@ def _table1(
     address: str | None,
     letters: str | None,
     resume: bool,
+    trial_timeout: float,
 ) -> int:
     """Run the Table I campaign with a progress bar on stderr; 130 if interrupted."""
     from tautwire.experiments.table1 import Progress as CampaignProgress
@@ -191,7 +204,16 @@ def _table1(
             bar.update(task, completed=state.finished, total=state.planned, failed=state.failures)
 
         report = reproduce_table1(
-            trials, workers, seed, out, backend, chosen, show, address=address, resume=resume
+            trials,
+            workers,
+            seed,
+            out,
+            backend,
+            chosen,
+            show,
+            address=address,
+            resume=resume,
+            trial_timeout=trial_timeout if backend == "local" else None,
         )
     if as_json:
         click.echo(json.dumps(report, indent=2))
@@ -239,7 +261,7 @@ def _table1_only(only: str, seed: int, as_json: bool) -> int:
     with Console(stderr=True).status(f"rerunning {only} ..."):
         results = rerun_trials(specs)
     if as_json:
-        click.echo(json.dumps([r.to_dict() for r in results], indent=2))
+        click.echo(json.dumps({"seed": seed, "trials": [r.to_dict() for r in results]}, indent=2))
         return 0
     out = Console()
     for r in results:

@@ -12,12 +12,17 @@ backends:
     worker runs one trial at a time, so the parent always knows which trial
     a worker holds: a worker that dies (segfault, ``os._exit``, out of
     memory) costs exactly that trial, recorded as a failure with cause
-    ``"crashed"``, and a new worker takes its place. (A
+    ``"crashed"``, and a new worker takes its place; so does one that runs
+    past ``trial_timeout`` (cause ``"hung"``). As with any ``spawn``
+    pool, a script that starts a campaign must guard its entry point with
+    ``if __name__ == "__main__":``. (A
     ``concurrent.futures.ProcessPoolExecutor`` would break as a whole, lose
     every queued trial and could not tell which one killed it.)
 ``ray``
-    Ray tasks on a local Ray instance or on a cluster (``address``); Ray is
-    the optional extra ``tautwire[ray]`` and is imported only here.
+    Ray tasks on a local Ray instance or on a cluster (``address``, whose
+    nodes need tautwire installed); Ray is the optional extra
+    ``tautwire[ray]`` and is imported only here. A task whose worker dies is
+    recorded with cause ``"crashed"``.
 
 Every backend hands each result to a callback as soon as it arrives (a
 progress bar, incremental saving). A trial that raises is a failure with
@@ -181,13 +186,17 @@ def guarded_trial(trial: TrialFunction, spec: TrialSpec) -> TrialResult:
     return result
 
 
-def _check(specs: Sequence[TrialSpec], backend: str, workers: int) -> None:
+def _check(
+    specs: Sequence[TrialSpec], backend: str, workers: int, trial_timeout: float | None
+) -> None:
     if backend not in BACKENDS:
         raise InvalidArgumentError(
             f"unknown backend {backend!r} (expected one of: {', '.join(BACKENDS)})"
         )
     if workers < 1:
         raise InvalidArgumentError(f"workers must be at least 1, got {workers}")
+    if trial_timeout is not None and not trial_timeout > 0:
+        raise InvalidArgumentError(f"trial_timeout must be positive, got {trial_timeout}")
     seen: set[tuple[str, int]] = set()
     for spec in specs:
         key = (spec.letter, spec.index)
@@ -205,6 +214,7 @@ def run_campaign(
     address: str | None = None,
     on_result: ResultCallback | None = None,
     log_dir: str | Path | None = None,
+    trial_timeout: float | None = None,
 ) -> CampaignResult:
     """Run every trial of ``specs``; stream each result to ``on_result`` as it ends.
 
@@ -222,6 +232,9 @@ def run_campaign(
             the simulator, anything a trial prints) to ``worker-N.log`` in
             this folder, under a header line per trial, instead of this
             process's terminal. None: the workers share this terminal.
+        trial_timeout: ``local`` only: wall time [s] after which a trial
+            that has not returned is stopped (its worker killed) and
+            recorded as a failure with cause ``"hung"``; None waits forever.
 
     Returns:
         The finished trials ordered by (letter, index), and whether the
@@ -234,7 +247,7 @@ def run_campaign(
         CampaignError: when the backend cannot run (Ray missing, the trial
             function cannot be sent to or loaded in a worker).
     """
-    _check(specs, backend, workers)
+    _check(specs, backend, workers, trial_timeout)
     logs = None if log_dir is None else Path(log_dir)
     results: list[TrialResult] = []
 
@@ -251,7 +264,7 @@ def run_campaign(
             _run_serial(specs, trial, deliver)
         elif backend == "local":
             used = workers
-            _run_local(specs, trial, min(workers, len(specs)), logs, deliver)
+            _run_local(specs, trial, min(workers, len(specs)), logs, trial_timeout, deliver)
         else:
             used = _run_ray(specs, trial, workers, address, deliver)
     except KeyboardInterrupt:
@@ -419,6 +432,7 @@ def _run_local(
     trial: TrialFunction,
     workers: int,
     log_dir: Path | None,
+    trial_timeout: float | None,
     deliver: ResultCallback,
 ) -> None:
     if not specs:
@@ -441,11 +455,15 @@ def _run_local(
         while queue or any(w.spec is not None for w in pool):
             for worker in pool:
                 if worker.ready and worker.spec is None and queue:
-                    worker.spec = queue.popleft()
-                    worker.started = time.perf_counter()
-                    worker.conn.send(worker.spec)
+                    nxt = queue.popleft()
+                    try:
+                        worker.conn.send(nxt)
+                    except OSError:  # the worker just died: the next wait sees it
+                        queue.appendleft(nxt)
+                        continue
+                    worker.spec, worker.started = nxt, time.perf_counter()
             waitables: list[Any] = [w.conn for w in pool] + [w.process.sentinel for w in pool]
-            ready = wait(waitables)
+            ready = wait(waitables, timeout=_wait_timeout(pool, trial_timeout))
             for slot, worker in enumerate(pool):
                 if worker.conn not in ready and worker.process.sentinel not in ready:
                     continue
@@ -461,7 +479,7 @@ def _run_local(
                         deliver(value)
                     continue
                 # The worker died: its trial (if any) is the one that killed it.
-                spec, how = worker.spec, _exit_text(worker.process)
+                held, how = worker.spec, _exit_text(worker.process)
                 worker.spec = None
                 worker.conn.close()
                 if not worker.ready:
@@ -471,17 +489,53 @@ def _run_local(
                     )
                 pool[slot] = _start_worker(context, payload, started, log_dir)
                 started += 1
-                if spec is not None:
+                if held is not None:
                     deliver(
                         failed_trial(
-                            spec,
+                            held,
                             "crashed",
                             f"the worker process died ({how}) while running this trial",
                             time.perf_counter() - worker.started,
                         )
                     )
+            for slot, worker in enumerate(pool):
+                if _overdue(worker, trial_timeout):
+                    assert worker.spec is not None and trial_timeout is not None
+                    overdue = worker.spec
+                    worker.process.kill()
+                    worker.process.join(timeout=_STOP_GRACE)
+                    worker.conn.close()
+                    pool[slot] = _start_worker(context, payload, started, log_dir)
+                    started += 1
+                    deliver(
+                        failed_trial(
+                            overdue,
+                            "hung",
+                            f"no result after {trial_timeout:g} s of wall time; "
+                            "its worker process was killed",
+                            time.perf_counter() - worker.started,
+                        )
+                    )
     finally:
         _stop_workers(pool)
+
+
+def _overdue(worker: _Worker, trial_timeout: float | None) -> bool:
+    """Whether the worker has held its trial for longer than ``trial_timeout`` [s]."""
+    return (
+        trial_timeout is not None
+        and worker.spec is not None
+        and time.perf_counter() - worker.started > trial_timeout
+    )
+
+
+def _wait_timeout(pool: list[_Worker], trial_timeout: float | None) -> float | None:
+    """How long [s] to wait for messages before the next trial becomes overdue."""
+    if trial_timeout is None:
+        return None
+    now = time.perf_counter()
+    left = [trial_timeout - (now - w.started) for w in pool if w.spec is not None]
+    return max(0.0, min(left)) + 0.01 if left else None
 
 
 def _receive(worker: _Worker) -> tuple[str, Any] | None:

@@ -351,6 +351,7 @@ def reproduce_table1(
     *,
     address: str | None = None,
     resume: bool = False,
+    trial_timeout: float | None = None,
     trial: TrialFunction = run_trial,
 ) -> dict[str, Any]:
     """Run the Table I campaign; write table1.md, table1_trials.csv and table1.json.
@@ -367,6 +368,8 @@ def reproduce_table1(
         resume: Reuse the trials of this campaign already in the output
             folder's CSV file (an earlier, interrupted run) instead of
             rerunning them; rows of other trials in it are dropped.
+        trial_timeout: ``local`` only: wall time [s] after which a trial is
+            stopped and recorded as failed with cause ``"hung"``.
         trial: The trial function (tests pass fakes).
 
     Returns:
@@ -421,6 +424,7 @@ def reproduce_table1(
             address=address,
             on_result=on_result,
             log_dir=logs if backend == "local" else None,
+            trial_timeout=trial_timeout,
         )
     finally:
         trials_file.close()
