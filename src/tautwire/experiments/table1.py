@@ -215,13 +215,17 @@ def _force_text(force: float | None) -> str:
     return "-" if force is None else f"{force:.1f}"
 
 
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}" if n == 1 else f"{n} {noun}s"
+
+
 def table1_markdown(report: dict[str, Any]) -> str:
     """The Markdown page of a :func:`reproduce_table1` report."""
     lines = [
         "# Table I: reliability of the manipulation primitives, randomised trials",
         "",
-        f"Seed {report['seed']}, {report['trials_per_primitive']} trials per primitive, "
-        f"backend {report['backend']} with {report['workers']} workers, "
+        f"Seed {report['seed']}, {_count(report['trials_per_primitive'], 'trial')} per primitive, "
+        f"backend {report['backend']} with {_count(report['workers'], 'worker')}, "
         f"wall time {report['wall_time']:.1f} s; "
         f"{report['finished']} of {report['planned']} trials finished"
         + (f" ({report['resumed']} reused from an earlier run)" if report["resumed"] else "")
