@@ -101,3 +101,19 @@ def test_table1_ray_backend_without_ray_names_the_extra(
     args = ["table1", "--backend", "ray", "--trials", "1", "--letters", "D", "--out", str(tmp_path)]
     assert main(["reproduce", *args]) == 1
     assert "pip install 'tautwire[ray]'" in capsys.readouterr().err
+
+
+@pytest.mark.slow
+def test_fig5c_contact_change_goals(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    from tautwire.experiments.fig5bc import reproduce_fig5c
+
+    r = reproduce_fig5c(tmp_path)
+    assert r["error_half_circle"] <= 0.002
+    assert len(r["declared_changes"]) == 1  # no spurious second change
+    assert 0 <= r["change_declared_after"] <= 5
+    assert r["peak_error_after_change"] < 0.086  # the paper's peak
+    assert r["samples_to_2mm_after_change"] is not None
+    assert r["samples_to_2mm_after_change"] <= 40
+    assert r["final_error"] <= 0.002 and r["final_fixture"] == "P1"
+    for ext in ("png", "csv", "json"):
+        assert (tmp_path / f"fig5c.{ext}").stat().st_size > 100

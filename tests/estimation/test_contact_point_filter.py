@@ -194,3 +194,72 @@ def test_std_shrinks_with_excitation():
     s120 = res[120][1].std
     assert np.all(s120 < s30)
     assert all(math.isfinite(v) for v in s120)
+
+
+def round_peg_lines(seed, radius=0.013, n=42, distance=0.3, noise=0.01, tension=2.5):
+    """A gripper circling a peg at the origin (sense +1 about z): lines tangent at ``radius``.
+
+    ``n`` lines 125 a circle (42: a third of a turn); ``noise`` [N] is that of
+    the mean force of an estimation period.
+    """
+    rng = np.random.default_rng(seed)
+    z = np.array([0.0, 0.0, 1.0])
+    out = []
+    for a in np.arange(n) * (2.0 * np.pi / 125) + rng.uniform(0, 2 * np.pi):
+        u = np.array([np.cos(a), np.sin(a), 0.0])
+        p = -radius * np.cross(z, u) + distance * u
+        f = -tension * u + rng.normal(0.0, noise, 3)
+        side = np.cross(f, z)
+        out.append((p, f, side / np.linalg.norm(side)))
+    return out
+
+
+def test_a_round_contact_learns_its_radius_and_finds_the_axis():
+    # the board design says R = 10.5 mm; the cable keeps 13 mm from the axis; half a turn
+    errors, radii, shifted_only = [], [], []
+    for seed in range(10):
+        lines = round_peg_lines(seed, n=62)
+        start = ([p + 0.0105 * s for p, _, s in lines[:3]], [f for _, f, _ in lines[:3]])
+        flt = ContactPointFilter(detect_changes=False)
+        flt.restart(*start, np.zeros(3), 0.01**2 * np.eye(3), radius=(0.0105, 0.005))
+        point = ContactPointFilter(detect_changes=False)  # lines shifted by the design's R
+        point.restart(*start, np.zeros(3), 0.01**2 * np.eye(3))
+        for p, f, s in lines[3:]:
+            flt.update(p, f, side=s)
+            point.update(p + 0.0105 * s, f)
+        assert flt.radius is not None
+        errors.append(float(np.linalg.norm(flt.x[:2])))
+        radii.append(flt.radius)
+        shifted_only.append(float(np.linalg.norm(point.x[:2])))
+    assert np.median(errors) <= 0.8e-3 and max(errors) <= 1.5e-3
+    assert np.median(shifted_only) >= 2.5e-3  # what a fixed R costs
+    assert np.median(radii) == pytest.approx(0.013, abs=0.7e-3)
+
+
+def test_a_point_contact_ignores_the_side():
+    d = circle(3)
+    a, b = ContactPointFilter(), ContactPointFilter()
+    for p, f in zip(d.p_gripper, d.f_sens, strict=True):
+        ra = a.update(p, f)
+        rb = b.update(p, f, side=np.array([0.0, 1.0, 0.0]))
+        assert a.radius is None and (ra.estimate is None) == (rb.estimate is None)
+    assert np.array_equal(a.x, b.x)
+
+
+def test_declare_change_restarts_from_the_prior_and_records_it():
+    d = circle(1)
+    flt = ContactPointFilter()
+    for p, f in zip(d.p_gripper[:50], d.f_sens[:50], strict=True):
+        flt.update(p, f)
+    prior = np.array([0.05, 0.02, 0.1])
+    flt.declare_change(
+        d.p_gripper[49:50], d.f_sens[49:50], prior, 1e-6 * np.eye(3), radius=(0.01, 0.002)
+    )
+    assert flt.changes == [49]
+    assert np.linalg.norm(flt.x - prior) < 0.01  # the prior and the one line
+    assert flt.radius == 0.01
+    flt.restart(d.p_gripper[49:50], d.f_sens[49:50])
+    assert flt.radius is None  # a restart without a radius is a point contact
+    flt.make_round(0.01, 0.002)
+    flt.reset()
+    assert flt.radius is None and not flt.running

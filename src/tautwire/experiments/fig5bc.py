@@ -105,7 +105,8 @@ def record_rotation(
         on_world=on_world,
     )
     first = series["iteration"][0] if series["iteration"] else 0
-    declared = [c - first for c in ctx.estimator.changes if c >= first]
+    # a change declared at filter iteration c shows from the record of iteration c + 1 on
+    declared = [c + 1 - first for c in ctx.estimator.changes if c + 1 >= first]
     return {"series": series, "result": result.to_dict(), "changes": declared, "period": period}
 
 

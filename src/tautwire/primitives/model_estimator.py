@@ -20,6 +20,7 @@ It sees only observations: no ground truth.
 from __future__ import annotations
 
 import math
+from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,10 +28,18 @@ from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
+from tautwire.estimation.round_contact import (
+    DESIGN_TOLERANCE,
+    RADIUS_STD,
+    TANGENT_TOLERANCE,
+    line_meets_peg,
+    shift_onto_axis,
+    side_towards_axis,
+)
 from tautwire.model import FeaturePoint, PathGraph
 from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
-from tautwire.model.vector3 import cross3, norm3
+from tautwire.model.vector3 import norm3
 from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
@@ -83,7 +92,9 @@ class ModelEstimator:
             axis, i.e. peg radius + cable radius). A cable leaves a peg
             tangentially, so while the gripper circles a peg the lines miss
             its axis by that radius; knowing on which side (the rotation's
-            sense), the filter is fed lines shifted onto the axis.
+            sense), the filter estimates the axis and the radius (starting
+            from this one). A line tangent to a peg between the gripper and
+            the contact declares that peg the new contact at once.
     """
 
     def __init__(
@@ -122,6 +133,10 @@ class ModelEstimator:
         self._sum_f = np.zeros(3)
         self._n = 0
         self._window_start: float | None = None
+        # the last filter samples (mean gripper position, mean raw force)
+        self._recent: deque[tuple[FloatArray, FloatArray]] = deque(
+            maxlen=contact_filter.detector.window
+        )
         self.state: TensionState | None = None
         self._gripper_positions: dict[str, FloatArray] = {}
         #: The feature point that the contact filter estimates (None: none yet).
@@ -255,28 +270,89 @@ class ModelEstimator:
         self._sum_f[:] = 0.0
         self._n = 0
         self._window_start = None
-        result = self.contact_filter.update(self._on_axis(p_mean, f_mean), f_mean)
+        kf = self.contact_filter
+        peg = self._round_contact()
+        if peg is not None and kf.running:
+            # a peg: the filter estimates its radius too, from the raw lines
+            axis, sense, radius = peg
+            if kf.radius is None:
+                kf.make_round(radius, RADIUS_STD)
+            result = kf.update(p_mean, f_mean, side_towards_axis(f_mean, axis, sense))
+        else:
+            result = kf.update(self._on_axis(p_mean, f_mean), f_mean)
         self.iterations += 1
+        self._recent.append((p_mean, f_mean))
         if result.changed and result.estimate is not None:
             self.changes.append(self.iterations - 1)
-            return self._add_contact(result.estimate, p_mean)
+            added = self._add_contact(result.estimate, p_mean)
+            peg = self._round_contact()
+            if peg is not None:
+                # a peg: the gated lines were fitted as if through a point;
+                # fit them again shifted onto its axis
+                recent = list(self._recent)
+                kf.restart(
+                    [self._on_axis(p, f) for p, f in recent],
+                    [f for _, f in recent],
+                    radius=(peg[2], RADIUS_STD),
+                )
+            return added
+        if result.nis is None:
+            return False
+        # a line that misses the contact may meet a peg of the design; one
+        # that still fits it may already rest on a peg in between
+        tolerance = TANGENT_TOLERANCE if result.used else DESIGN_TOLERANCE
+        return self._peg_change(p_mean, f_mean, tolerance)
+
+    def _peg_change(self, p_g: FloatArray, f: FloatArray, tolerance: float) -> bool:
+        """Declare a change at once if a line is tangent to a peg of the board design.
+
+        A line tangent (to within ``tolerance`` [m]), on the rotation's side,
+        to a peg between the gripper and the current contact: the cable bears
+        on that peg, the nearest constraint along it. For a line that the
+        filter gated (it misses the current contact) that is strong evidence
+        on its own, without waiting for the detector's run of gated lines.
+        The restart's prior is the peg's design position with std
+        ``DESIGN_TOLERANCE``, which the following lines refine. True if the
+        graph changed.
+        """
+        c = self.contact_index
+        kf = self.contact_filter
+        if self.rotation is None or c is None or not kf.running:
+            return False
+        axis, sense = self.rotation
+        label = self.graph.points[c].label
+        for name, (axis_point, radius) in self.round_fixtures.items():
+            if name == label:
+                continue
+            meet = line_meets_peg(p_g, f, axis, sense, axis_point, radius, kf.x, tolerance)
+            if meet is None:
+                continue
+            q = shift_onto_axis(p_g, f, axis, sense, radius)
+            kf.declare_change(
+                [q], [f], meet, DESIGN_TOLERANCE**2 * np.eye(3), radius=(radius, RADIUS_STD)
+            )
+            self.changes.append(self.iterations - 1)
+            return self._add_contact(kf.x.copy(), p_g)
         return False
+
+    def _round_contact(self) -> tuple[FloatArray, float, float] | None:
+        """(axis, sense, R) while rotating about a round contact of the design, else None."""
+        c = self.contact_index
+        if self.rotation is None or c is None:
+            return None
+        fixture = self.round_fixtures.get(self.graph.points[c].label)
+        if fixture is None:
+            return None
+        axis, sense = self.rotation
+        return axis, sense, fixture[1]
 
     def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
         """The gripper position shifted so that its line passes a round contact's axis."""
-        c = self.contact_index
-        if self.rotation is None or c is None:
+        peg = self._round_contact()
+        if peg is None:
             return p_g
-        fixture = self.round_fixtures.get(self.graph.points[c].label)
-        if fixture is None:
-            return p_g
-        axis, sense = self.rotation
-        side = cross3(f, axis)  # horizontal normal of the line, towards the axis
-        n = norm3(side)
-        if n < 1e-9:
-            return p_g
-        shifted: FloatArray = p_g + (sense * fixture[1] / n) * side
-        return shifted
+        axis, sense, radius = peg
+        return shift_onto_axis(p_g, f, axis, sense, radius)
 
     def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> bool:
         """A new contact between the old one and the gripper: add its feature point."""
