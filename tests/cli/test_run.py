@@ -36,3 +36,68 @@ def test_run_bad_scenario_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixt
     assert main(["run", str(bad)]) == 1
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "bad.yaml" in err[0]
+
+
+TENSION_ONLY = """\
+version: 1
+name: tension-only
+seed: 1
+robot:
+  force_limit: 15.0
+  sensor: {arm: left, noise_force: 0.05}
+  grippers:
+    left: {position: [0.49, 0.0, 0.1]}
+    right: {position: [0.3, -0.45, 0.35]}
+board:
+  fixtures:
+    - {name: A1, type: anchor, position: [0.0, 0.0, 0.1]}
+cables:
+  - {name: W1, length: 0.5, mass_per_length: 0.03, stiffness: 200.0, radius: 0.0025,
+     start: A1, held_by: {arm: left, at: 0.5}}
+task:
+  - {primitive: D, arm: left, force: 2.0}
+"""
+
+
+def _tension_only(tmp_path: Path) -> Path:
+    path = tmp_path / "tension-only.yaml"
+    path.write_text(TENSION_ONLY)
+    return path
+
+
+def test_run_video_writes_a_gif_and_a_snapshot(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    scenario = _tension_only(tmp_path)
+    monkeypatch.chdir(tmp_path)  # no --out: the default folder
+    status = main(["run", str(scenario), "--video", "--json"])
+    captured = capsys.readouterr()
+    result = json.loads(captured.out)
+    assert status == 0 and result["success"] is True
+    files = result["files"]
+    assert Path(files["result"]) == Path("out/run/result.json") and Path(files["result"]).is_file()
+    if "video" not in files:  # rendering unavailable: said on stderr, the run still scored
+        assert "no video" in captured.err
+        pytest.skip(f"offscreen rendering unavailable: {captured.err.strip()}")
+    assert Path(files["video"]).read_bytes()[:6] == b"GIF89a"
+    assert Path(files["snapshot"]).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert json.loads(Path(files["result"]).read_text())["files"]["video"] == files["video"]
+
+
+def test_run_video_without_rendering_says_so_and_exits_as_the_run(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from tautwire.errors import SimulationError
+
+    def unavailable(*args: object, **kwargs: object) -> None:
+        raise SimulationError("offscreen rendering is unavailable (MUJOCO_GL=test)")
+
+    monkeypatch.setattr("tautwire.sim.render.SceneRenderer", unavailable)
+    out = tmp_path / "out"
+    status = main(["run", str(_tension_only(tmp_path)), "--video", "--out", str(out), "--json"])
+    captured = capsys.readouterr()
+    result = json.loads(captured.out)
+    assert status == 0 and result["success"] is True
+    assert "no video" in captured.err and "MUJOCO_GL=test" in captured.err
+    assert set(result["files"]) == {"result"} and (out / "result.json").is_file()
+    assert not (out / "run.gif").exists()

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from tautwire.errors import InvalidArgumentError, SimulationError
-from tautwire.sim.render import SceneRenderer, render_frame, write_png
+from tautwire.sim.render import SceneRenderer, render_frame, scene_points, write_png
 from tests.sim.scenes import peg_scene
 
 
@@ -45,3 +45,30 @@ def test_renderer_closes_and_validates() -> None:
 def test_write_png_rejects_wrong_shape(tmp_path) -> None:
     with pytest.raises(InvalidArgumentError):
         write_png(np.zeros((4, 4)), tmp_path / "x.png")
+
+
+def test_the_framing_camera_shows_the_cable_larger_than_the_overview() -> None:
+    world = peg_scene()
+
+    def orange_pixels(camera: str | None) -> int:
+        try:
+            with SceneRenderer(world, 320, 240, camera=camera, shadows=False) as renderer:
+                frame = renderer.frame()
+        except SimulationError as exc:
+            pytest.skip(str(exc))
+        r, g, b = (frame[..., i].astype(int) for i in range(3))
+        return int(((r - b > 100) & (r > g) & (g > 0.48 * r)).sum())
+
+    assert orange_pixels(None) > 2 * orange_pixels("overview")
+
+
+def test_scene_points_and_look_at() -> None:
+    world = peg_scene()
+    now, reach = scene_points(world), scene_points(world, reach=True)
+    assert now.shape[1] == 3 and reach.shape[0] > now.shape[0]
+    try:
+        renderer = SceneRenderer(world, 64, 48, shadows=False)
+    except SimulationError as exc:
+        pytest.skip(str(exc))
+    with renderer, pytest.raises(InvalidArgumentError, match="fixed camera"):
+        renderer.look_at(now)

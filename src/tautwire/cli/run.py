@@ -1,4 +1,4 @@
-"""``tautwire run SCENARIO``: simulate a scenario and score it."""
+"""``tautwire run SCENARIO``: simulate a scenario and score it (optionally on video)."""
 
 from __future__ import annotations
 
@@ -7,6 +7,9 @@ from rich.console import Console
 from rich.table import Table
 
 from tautwire.scenario import load_scenario
+
+#: Output folder of ``--video`` when ``--out`` is not given.
+DEFAULT_VIDEO_OUT = "out/run"
 
 
 @click.command()
@@ -17,21 +20,51 @@ from tautwire.scenario import load_scenario
     "out_dir",
     type=click.Path(file_okay=False),
     default=None,
-    help="folder for result.json",
+    help=f"folder for result.json and the video (default with --video: {DEFAULT_VIDEO_OUT})",
 )
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
-def run(scenario_file: str, seed: int | None, out_dir: str | None, as_json: bool) -> int:
+@click.option(
+    "--video", is_flag=True, help="also write run.gif and snapshot.png (where rendering works)"
+)
+def run(
+    scenario_file: str, seed: int | None, out_dir: str | None, as_json: bool, video: bool
+) -> int:
     """Run the task of SCENARIO in the simulated world and score it against the truth."""
     from tautwire.experiments.run_scenario import run_scenario, write_result
+    from tautwire.tasks import TickRecord
+    from tautwire.viz.scene_recorder import SceneRecorder
 
     scenario = load_scenario(scenario_file)
     err = Console(stderr=True)
-    with err.status(f"simulating {scenario.name} ...") as status:
+    recorder = SceneRecorder() if video else None
+    if video and out_dir is None:
+        out_dir = DEFAULT_VIDEO_OUT
 
-        def on_step(i: int, report: object) -> None:
-            status.update(f"simulating {scenario.name}: step {i + 2} of {len(scenario.task)}")
+    def on_tick(rec: TickRecord) -> None:
+        if recorder is not None:
+            recorder.tick(rec.observation.time)
 
-        result, _, _ = run_scenario(scenario, seed, on_step=on_step)
+    try:
+        with err.status(f"simulating {scenario.name} ...") as status:
+
+            def on_step(i: int, report: object) -> None:
+                status.update(f"simulating {scenario.name}: step {i + 2} of {len(scenario.task)}")
+
+            result, _, _ = run_scenario(
+                scenario,
+                seed,
+                on_step=on_step,
+                on_tick=on_tick if recorder is not None else None,
+                on_world=recorder.attach if recorder is not None else None,
+            )
+        if recorder is not None:
+            assert out_dir is not None
+            result.files.update(recorder.save(out_dir, "run.gif", "snapshot.png"))
+    finally:
+        if recorder is not None:
+            recorder.close()
+    if recorder is not None and recorder.error is not None:
+        err.print(f"no video: {recorder.error}", markup=False, highlight=False)
     if out_dir is not None:
         result.files["result"] = str(write_result(result, out_dir))
     if as_json:

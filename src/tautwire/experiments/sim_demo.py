@@ -16,12 +16,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
-from tautwire.errors import SimulationError
 from tautwire.experiments.fig5bc import record_rotation, series_arrays
 from tautwire.scenario import load_scenario
-from tautwire.sim.world import SimWorld
+from tautwire.viz.scene_recorder import SceneRecorder
 
 DEMO_SCENARIO = Path(__file__).parents[1] / "data" / "demo.yaml"
 log = logging.getLogger(__name__)
@@ -36,37 +33,6 @@ class SimDemoResult:
     changes: list[int]
     files: dict[str, str] = field(default_factory=dict)
     video_error: str | None = None
-
-
-class _Recorder:
-    """Grabs a frame every ``every`` seconds of simulated time."""
-
-    def __init__(self, every: float = 0.25, width: int = 480, height: int = 360) -> None:
-        self.every = every
-        self.size = (width, height)
-        self.frames: list[np.ndarray] = []
-        self.renderer: Any = None
-        self.error: str | None = None
-        self._next = 0.0
-
-    def attach(self, world: SimWorld) -> None:
-        try:
-            from tautwire.sim.render import SceneRenderer
-
-            self.renderer = SceneRenderer(world, *self.size, shadows=False)
-        except (SimulationError, ImportError, RuntimeError) as exc:
-            self.error = str(exc)
-
-    def tick(self, time: float) -> None:
-        if self.renderer is None or time < self._next:
-            return
-        self._next = time + self.every
-        self.frames.append(self.renderer.frame())
-
-    def close(self) -> None:
-        if self.renderer is not None:
-            self.renderer.close()
-            self.renderer = None
 
 
 def run_sim_demo(
@@ -89,7 +55,7 @@ def run_sim_demo(
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     scenario = load_scenario(DEMO_SCENARIO)
-    recorder = _Recorder() if video else None
+    recorder = SceneRecorder() if video else None
 
     def on_tick(t: float) -> None:
         if recorder is not None:
@@ -104,7 +70,7 @@ def run_sim_demo(
             on_time=on_tick,
             on_world=recorder.attach if recorder is not None else None,
         )
-        snapshot = recorder.renderer.frame() if recorder and recorder.renderer else None
+        videos = recorder.save(out, "demo.gif", "snapshot.png") if recorder else {}
     finally:
         if recorder is not None:
             recorder.close()
@@ -125,17 +91,7 @@ def run_sim_demo(
         )
     if recorder is not None:
         result.video_error = recorder.error
-        if recorder.frames:
-            import imageio.v2 as imageio
-
-            gif = out / "demo.gif"
-            imageio.mimsave(gif, list[Any](recorder.frames), duration=0.1, loop=0)
-            result.files["video"] = str(gif)
-        if snapshot is not None:
-            from tautwire.sim.render import write_png
-
-            write_png(snapshot, out / "snapshot.png")
-            result.files["snapshot"] = str(out / "snapshot.png")
+        result.files.update(videos)
     import json
 
     (out / "result.json").write_text(

@@ -6,10 +6,18 @@ when ``MUJOCO_GL`` is unset (it must be chosen before MuJoCo is imported).
 Where no backend works, :class:`SceneRenderer` raises
 :class:`~tautwire.errors.SimulationError`, so callers can fall back (e.g.
 skip the video).
+
+The builder's fixed "overview" camera takes in everything, the parked second
+gripper included, which leaves the cable a few dozen pixels long. A
+renderer made with ``camera=None`` looks instead at points given to
+:meth:`SceneRenderer.look_at`: :func:`scene_points` gives the fixtures and
+the cables, now or everywhere a cable can reach (within its length of its
+start anchor: what a video of a whole run needs).
 """
 
 from __future__ import annotations
 
+import math
 import os
 import struct
 import zlib
@@ -18,12 +26,45 @@ from types import TracebackType
 
 import mujoco
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError, SimulationError
 from tautwire.sim.world import SimWorld
 
 UInt8Array = NDArray[np.uint8]
+FloatArray = NDArray[np.float64]
+
+#: View direction of the framing camera: from the front (-y), looking down.
+AZIMUTH = 90.0  # deg
+ELEVATION = -40.0  # deg
+
+
+def scene_points(world: SimWorld, reach: bool = False) -> FloatArray:
+    """Points [m] that a view of ``world`` should take in: fixtures, cables, holding grippers.
+
+    Args:
+        world: The world.
+        reach: Also the circle, at its start's height, of a cable's length
+            around its start anchor: wherever the cable can go in a run.
+
+    Returns:
+        The points, world frame.  # (N, 3)
+    """
+    pts = [np.asarray(f.position, dtype=float) for f in world.spec.fixtures]
+    for idx in world._cables.values():
+        pts.extend(world._data.xpos[idx.body_ids])
+        start = idx.spec.start
+        if reach and start is not None:
+            c = np.asarray(world.spec.fixture(start).position, dtype=float)
+            r = idx.spec.length
+            for a in np.linspace(0.0, 2.0 * math.pi, 16, endpoint=False):
+                pts.append(c + r * np.array([math.cos(a), math.sin(a), 0.0]))
+    for arm, state in world._grippers.items():
+        if state.held is not None:  # a parked gripper stays out of the picture
+            bodies = world._data.xpos[world._gripper_bodies[arm]]
+            pts.extend(bodies)
+            pts.append(bodies[0] + np.array([0.0, 0.0, 0.06]))  # the gripper's top
+    return np.array(pts, dtype=float).reshape(-1, 3)
 
 
 class SceneRenderer:
@@ -33,7 +74,9 @@ class SceneRenderer:
         world: The world to draw.
         width: Frame width [pixels], at most 1280.
         height: Frame height [pixels], at most 960.
-        camera: Name of a camera in the scene (the builder adds "overview").
+        camera: Name of a camera in the scene (the builder adds "overview"),
+            or None for a free camera that frames :func:`scene_points` (see
+            :meth:`look_at`).
         shadows: Draw shadows (about 3x slower).
 
     Raises:
@@ -46,7 +89,7 @@ class SceneRenderer:
         world: SimWorld,
         width: int = 640,
         height: int = 480,
-        camera: str = "overview",
+        camera: str | None = "overview",
         shadows: bool = True,
     ) -> None:
         if not (0 < width <= 1280 and 0 < height <= 960):
@@ -54,10 +97,11 @@ class SceneRenderer:
                 f"frame size must be within 1280 x 960, got {width} x {height}"
             )
         model = world._model
-        if mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
+        if camera is not None and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
             raise InvalidArgumentError(f"no camera named {camera!r} in the scene")
         self._world = world
-        self._camera = camera
+        self._camera: str | mujoco.MjvCamera = camera if camera is not None else mujoco.MjvCamera()
+        self._aspect = width / height
         try:
             self._renderer: mujoco.Renderer | None = mujoco.Renderer(model, height, width)
         except Exception as exc:  # the GL backends raise assorted errors
@@ -71,6 +115,43 @@ class SceneRenderer:
         self._option.flags[mujoco.mjtVisFlag.mjVIS_FLEXVERT] = (
             False  # draw the cable, not its vertices
         )
+        if camera is None:
+            self.look_at(scene_points(world))
+
+    def look_at(self, points: ArrayLike, margin: float = 1.1) -> None:
+        """Aim the free camera (``camera=None``) so that ``points`` [m] fill the frame.
+
+        Args:
+            points: World points to take in.  # (N, 3)
+            margin: Room around them, a factor on the distance.
+
+        Raises:
+            InvalidArgumentError: for a named camera, or no finite points.
+        """
+        cam = self._camera
+        if isinstance(cam, str):
+            raise InvalidArgumentError(f"the renderer uses the fixed camera {cam!r}")
+        pts = np.asarray(points, dtype=float).reshape(-1, 3)
+        pts = pts[np.all(np.isfinite(pts), axis=1)]
+        if pts.shape[0] == 0:
+            raise InvalidArgumentError("no finite points to look at")
+        centre = 0.5 * (pts.min(axis=0) + pts.max(axis=0))
+        az, el = math.radians(AZIMUTH), math.radians(ELEVATION)
+        forward = np.array([math.cos(el) * math.cos(az), math.cos(el) * math.sin(az), math.sin(el)])
+        right = np.cross(forward, [0.0, 0.0, 1.0])
+        right /= np.linalg.norm(right)
+        up = np.cross(right, forward)
+        tan_v = math.tan(math.radians(float(self._world._model.vis.global_.fovy)) / 2.0)
+        tan_h = tan_v * self._aspect
+        rel = pts - centre
+        depth = rel @ forward  # a point at distance D + depth from the eye
+        across = np.maximum(np.abs(rel @ right) / tan_h, np.abs(rel @ up) / tan_v)
+        distance = max(float(np.max(margin * across - depth)), 0.1)
+        cam.type = mujoco.mjtCamera.mjCAMERA_FREE
+        cam.lookat[:] = centre
+        cam.distance = distance
+        cam.azimuth = AZIMUTH
+        cam.elevation = ELEVATION
 
     def frame(self) -> UInt8Array:
         """The scene now, as RGB pixels of shape (height, width, 3).
