@@ -41,7 +41,7 @@ which the cable passes the axis as a 4th state; each line then comes with the
 side on which it passes (known from the rotation's sense), and the estimate
 is the axis. R is not just peg radius + cable radius: the simulated cable
 keeps 12-16 mm from the axis of a peg where that sum is 10.5 mm, and a fixed
-R put the estimate 2.5-3 mm off the axis in Fig. 5c (1.1-1.5 mm with R
+R left the estimate 2.4-3.3 mm off the axis in Fig. 5c (1.1-1.5 mm with R
 estimated, seeds 0-5).
 """
 
