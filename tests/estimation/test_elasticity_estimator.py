@@ -119,3 +119,15 @@ def test_forgetting_tracks_a_stiffness_change():
 def test_constructor_validates(kwargs):
     with pytest.raises(InvalidArgumentError):
         ElasticityEstimator(**kwargs)
+
+
+def test_reset_with_a_new_prior_is_clamped() -> None:
+    from tautwire.estimation import ElasticityEstimator
+
+    est = ElasticityEstimator(k_initial=100.0, k_range=(5.0, 500.0))
+    est.reset(k_initial=250.0)
+    assert est.k_hat == 250.0
+    est.reset(k_initial=1e6)
+    assert est.k_hat == 500.0
+    est.reset()
+    assert est.k_hat == 500.0  # the prior stays

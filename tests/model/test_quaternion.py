@@ -51,3 +51,17 @@ def test_orientation_along_nearly_minus_x() -> None:
     ):
         x_axis = rotate(orientation_along(v), [1.0, 0.0, 0.0])
         assert x_axis == pytest.approx(np.asarray(v) / np.linalg.norm(v), abs=1e-12)
+
+
+def test_turn_x_onto_takes_the_tool_x_axis_onto_a_direction() -> None:
+    import numpy as np
+
+    from tautwire.model.quaternion import rotate, turn_x_onto
+
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        q = rng.normal(size=4)
+        q /= np.linalg.norm(q)
+        d = rng.normal(size=3)
+        turned = turn_x_onto(q, d)
+        assert np.allclose(rotate(turned, [1.0, 0.0, 0.0]), d / np.linalg.norm(d))

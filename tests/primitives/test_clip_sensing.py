@@ -18,8 +18,8 @@ def test_seated_from_the_exit_of_the_slot() -> None:
     sensing = ClipHeight(seat, np.array([1.0, 0.0, 0.0]), 0.006)
     p = np.array([0.056, 0.0, -0.05])  # 5 cm beyond the slot's exit, 5 cm below
     d = (np.array([0.006, 0.0, 0.0]) - p) / np.linalg.norm(np.array([0.006, 0.0, 0.0]) - p)
-    for _ in range(50):
-        sensing.update(p, d, True)
+    for k in range(50):
+        sensing.update(0.004 * k, p, d, True)
     assert sensing.height == pytest.approx(0.0, abs=1e-9) and sensing.seated
 
 

@@ -37,3 +37,16 @@ def test_added_points_and_dropped_estimates() -> None:
     assert len(g.points) == 3
     j = add_point(g, 0.2, np.array([0.2, 0.0, 0.0]), "fixed", "C1")
     assert g.points[j].label == "C1" and g.arc_lengths()[j] == pytest.approx(0.2)
+
+
+def test_a_point_on_the_sensing_edge_shortens_it_and_stiffens_k() -> None:
+    from tests.primitives.conftest import context
+
+    ctx = context(k_initial=100.0)
+    # the edge from A1 (0.1 m) to the gripper (0.4 m) is 0.3 m long
+    from tautwire.primitives.model_edits import add_on_sensing_edge
+
+    add_on_sensing_edge(ctx.estimator, 0.2, np.array([0.3, 0.0, 0.1]), "gripper", "right")
+    assert len(ctx.graph.points) == 3
+    assert ctx.estimator.contact_index == 1  # the new gripper point
+    assert ctx.estimator.elasticity.k_hat == pytest.approx(300.0)  # 100 * 0.3 / 0.1

@@ -123,8 +123,18 @@ class ElasticityEstimator:
         self._k0_var = float(k_initial_std) ** 2
         self.reset()
 
-    def reset(self) -> None:
-        """Forget all data, including a partial window (e.g. after a contact change: a new edge)."""
+    def reset(self, k_initial: float | None = None) -> None:
+        """Forget all data, including a partial window (e.g. after a contact change: a new edge).
+
+        Args:
+            k_initial: New prior k [N/m] (clamped to [k_min, k_max]), e.g.
+                the old estimate rescaled for an edge of another length;
+                None keeps the prior.
+        """
+        if k_initial is not None:
+            if not math.isfinite(k_initial):
+                raise InvalidArgumentError(f"k_initial must be finite, got {k_initial}")
+            self._k0 = min(max(float(k_initial), self.k_min), self.k_max)
         self._k = self._k0
         self._c = 0.0
         # P = diag(var_k, var_c); c is unknown until the first sample.

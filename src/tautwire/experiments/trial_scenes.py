@@ -24,6 +24,7 @@ import numpy as np
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
+from tautwire.model.quaternion import multiply
 from tautwire.scenario import Scenario
 from tautwire.scenario.loader import scenario_from_data
 from tautwire.scenario.primitive_catalogue import find_primitive
@@ -249,6 +250,19 @@ def _two_holds(
     raise InvalidArgumentError("could not place two holds inside the workspace")
 
 
+def _one_arm(gripper: np.ndarray, u: np.ndarray) -> dict[str, Any]:
+    """The left gripper at ``gripper`` with its x-axis along ``u``; the right one parked."""
+    return {
+        "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+        "right": _parked(gripper),
+    }
+
+
+def _anchor(position: np.ndarray) -> dict[str, Any]:
+    """The anchor A1 that holds the cable's start."""
+    return {"name": "A1", "type": "anchor", "position": list(position)}
+
+
 def _pair_grippers(left: np.ndarray, right: np.ndarray, u: np.ndarray) -> dict[str, Any]:
     q = _yaw_quaternion(u)
     return {
@@ -314,11 +328,8 @@ def scene_d(seed: int) -> TrialScene:
     scenario = _scenario(
         "D",
         seed,
-        {
-            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
-            "right": _parked(gripper),
-        },
-        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        _one_arm(gripper, u),
+        [_anchor(anchor)],
         cable,
         [{"primitive": "D", "arm": "left", "force": force}],
     )
@@ -336,11 +347,8 @@ def scene_i(seed: int) -> TrialScene:
     scenario = _scenario(
         "I",
         seed,
-        {
-            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
-            "right": _parked(gripper),
-        },
-        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        _one_arm(gripper, u),
+        [_anchor(anchor)],
         cable,
         [
             {"primitive": "D", "arm": "left", "force": force},
@@ -368,11 +376,8 @@ def scene_e(seed: int) -> TrialScene:
     scenario = _scenario(
         "E",
         seed,
-        {
-            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
-            "right": _parked(gripper),
-        },
-        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        _one_arm(gripper, u),
+        [_anchor(anchor)],
         cable,
         [
             {"primitive": "D", "arm": "left", "force": force},
@@ -393,8 +398,6 @@ def scene_g(seed: int) -> TrialScene:
     yaw = math.atan2(float(u[1]), float(u[0])) + yaw_off
     qz = np.array([math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)])
     qy = np.array([math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0])
-    from tautwire.model.quaternion import multiply
-
     q = multiply(qz, qy)
     scenario = _scenario(
         "G",
@@ -403,7 +406,7 @@ def scene_g(seed: int) -> TrialScene:
             "left": {"position": list(gripper), "orientation": [float(v) for v in q]},
             "right": _parked(gripper),
         },
-        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        [_anchor(anchor)],
         cable,
         [
             {"primitive": "D", "arm": "left", "force": force},
@@ -442,7 +445,7 @@ def scene_h(seed: int) -> TrialScene:
                 "orientation": [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)],
             },
         },
-        [{"name": "A1", "type": "anchor", "position": list(anchor)}],
+        [_anchor(anchor)],
         cable,
         [
             {"primitive": "D", "arm": "left", "force": force},
@@ -488,12 +491,9 @@ def scene_f(seed: int) -> TrialScene:
     scenario = _scenario(
         "F",
         seed,
-        {
-            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
-            "right": _parked(gripper),
-        },
+        _one_arm(gripper, u),
         [
-            {"name": "A1", "type": "anchor", "position": list(anchor)},
+            _anchor(anchor),
             {"name": "C1", "type": "clip", "position": list(seat), "yaw": slot, "push_force": push},
         ],
         cable,

@@ -14,6 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.spatial.transform import Rotation
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.model.vector3 import cross3, norm3
 
 FloatArray = NDArray[np.float64]
 
@@ -106,6 +107,8 @@ def orientation_along(direction: ArrayLike) -> FloatArray:
 def shortest_arc(a: ArrayLike, b: ArrayLike) -> FloatArray:
     """The smallest rotation [w, x, y, z] that turns direction ``a`` onto ``b``.
 
+    Float arithmetic (no numpy.cross): it runs in the control loop.
+
     Args:
         a: Non-zero direction.  # (3,)
         b: Non-zero direction.  # (3,)
@@ -116,13 +119,29 @@ def shortest_arc(a: ArrayLike, b: ArrayLike) -> FloatArray:
     """
     u = np.asarray(a, dtype=float)
     v = np.asarray(b, dtype=float)
-    u = u / float(np.linalg.norm(u))
-    v = v / float(np.linalg.norm(v))
+    u = u / norm3(u)
+    v = v / norm3(v)
     c = float(u @ v)
-    if c < -1.0 + 1e-9:
-        n = np.cross(u, [1.0, 0.0, 0.0] if abs(u[0]) < 0.9 else [0.0, 1.0, 0.0])
-        n /= float(np.linalg.norm(n))
+    if c < -1.0 + 1e-9:  # opposite: half turn about any axis normal to a
+        n = cross3(u, [1.0, 0.0, 0.0] if abs(u[0]) < 0.9 else [0.0, 1.0, 0.0])
+        n /= norm3(n)
         return np.array([0.0, *n])
-    q = np.array([1.0 + c, *np.cross(u, v)])
-    out: FloatArray = q / float(np.linalg.norm(q))
+    q = np.array([1.0 + c, *cross3(u, v)])
+    out: FloatArray = q / math.sqrt(float(q @ q))
     return out
+
+
+def turn_x_onto(q: ArrayLike, direction: ArrayLike) -> FloatArray:
+    """``q`` turned by the shortest arc that takes its x-axis onto ``direction``.
+
+    How a gripper keeps its tool x-axis along the cable: the smallest change
+    of orientation, no twist added.
+
+    Args:
+        q: Current orientation [w, x, y, z].  # (4,)
+        direction: Desired direction of the x-axis (any length).  # (3,)
+
+    Returns:
+        The turned orientation [w, x, y, z].  # (4,)
+    """
+    return multiply(shortest_arc(rotate(q, [1.0, 0.0, 0.0]), direction), q)

@@ -16,10 +16,11 @@ import math
 import numpy as np
 from numpy.typing import NDArray
 
+from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.outcome import Outcome
+
 FloatArray = NDArray[np.float64]
 
-#: Low-pass weight of a new height sample (~0.05 s at 4 ms).
-SMOOTHING = 1.0 / 12.0
 #: The cable counts as seated within this height [m] above the seat.
 SEATED = 0.004
 
@@ -76,10 +77,17 @@ class ClipHeight:
         self.seat = np.asarray(seat, dtype=float)
         self.slot = np.asarray(slot, dtype=float)
         self.half_length = float(half_length)
-        self.height: float | None = None  # above the seat [m], low-passed
+        self._height: LowPass[float] = LowPass()
 
-    def update(self, p_gripper: FloatArray, direction: FloatArray, taut: bool) -> float | None:
-        """Add a sample; return the low-passed height [m] above the seat."""
+    @property
+    def height(self) -> float | None:
+        """The low-passed height [m] of the cable above the seat (None before a sample)."""
+        return self._height.value
+
+    def update(
+        self, time: float, p_gripper: FloatArray, direction: FloatArray, taut: bool
+    ) -> float | None:
+        """Add the sample of ``time`` [s]; return the low-passed height [m] above the seat."""
         if not taut:
             return self.height
         side = 1.0 if float((p_gripper - self.seat) @ self.slot) >= 0.0 else -1.0
@@ -87,13 +95,16 @@ class ClipHeight:
         z = height_at_clip(p_gripper, direction, exit_point)
         if z is None or not math.isfinite(z):
             return self.height
-        h = z - float(self.seat[2])
-        self.height = h if self.height is None else self.height + SMOOTHING * (h - self.height)
-        return self.height
+        return self._height.update(time, z - float(self.seat[2]))
 
-    def reset(self) -> None:
-        """Forget the low-passed height."""
-        self.height = None
+    def verdict(self, clip: str) -> Outcome:
+        """After lifting: success if the cable is still seated in ``clip``, else ``not_clipped``."""
+        mm = 1e3 * (self.height or 0.0)
+        if self.seated:
+            return Outcome.success(f"clipped into {clip} (cable {mm:.1f} mm above the seat)")
+        return Outcome.failure(
+            "not_clipped", f"the cable left {clip} when lifted ({mm:.1f} mm above its seat)"
+        )
 
     @property
     def seated(self) -> bool:

@@ -6,16 +6,16 @@ import math
 
 import numpy as np
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.interpolation import lerp
 from tautwire.model.quaternion import orientation_along
 from tautwire.model.tension import G as GRAVITY
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
-from tautwire.primitives.model_edits import add_point, rescale_elasticity
+from tautwire.primitives.model_edits import add_on_sensing_edge
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
 from tautwire.robot import Arm, Command, GripperCommand, Observation
 
 FloatArray = np.ndarray
@@ -135,19 +135,8 @@ class GraspTensioned(Primitive):
             fingers = GripperCommand("hold")
             if obs.time - self._phase_since >= 0.2:
                 self._confirm(obs, ctx, state.tension)
-        mine = Pose(target, q)
-        other = self._hold[0 if sensing == "left" else 1]
-        keeper = Pose(other.position, other.orientation)
-        desired = DualPose(keeper, mine) if sensing == "left" else DualPose(mine, keeper)
-        left = sensing == "left"
-        twist = ctx.controller(
-            current_pose(obs),
-            desired,
-            (self.force, None) if left else (None, self.force),
-            (state.force, None) if left else (None, state.force),
-            ctx.estimator.elasticity.k_hat,
-            (state.direction, None) if left else (None, state.direction),
-        )
+        desired = with_pose(self._hold, self.arm, Pose(target, q))
+        twist = tension_twist(ctx, obs, sensing, desired, self.force, state)
         if self.phase == "close":  # hold still while the fingers close
             k = 0 if self.arm == "left" else 6
             twist[k : k + 6] = 0.0
@@ -169,14 +158,9 @@ class GraspTensioned(Primitive):
         if tension < 0.2 * self.force:
             self.outcome = Outcome.failure("slipped", "the cable went slack while grasping")
             return
-        est = ctx.estimator
-        s = ctx.graph.arc_lengths()
-        old = abs(float(s[est.gripper_index]) - float(s[est.contact_index or 0]))
-        add_point(ctx.graph, self.at, obs.gripper(self.arm).position, "gripper", self.arm)
-        s = ctx.graph.arc_lengths()
-        new = abs(float(s[est.gripper_index]) - self.at)
-        if new > 0.0:
-            rescale_elasticity(est, old / new)
+        add_on_sensing_edge(
+            ctx.estimator, self.at, obs.gripper(self.arm).position, "gripper", self.arm
+        )
         self.outcome = Outcome.success(
             f"grasped at {self.at:.3f} m, fingers {1e3 * opening:.1f} mm apart"
         )

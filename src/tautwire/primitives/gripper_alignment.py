@@ -6,17 +6,17 @@ import math
 
 import numpy as np
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import multiply, rotate, shortest_arc
+from tautwire.model.quaternion import rotate, turn_x_onto
+from tautwire.model.vector3 import norm3
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.robot import Arm, Command, Observation
-
-#: Low-pass weight of a new force direction (~0.05 s at 4 ms).
-SMOOTHING = 1.0 / 12.0
 
 
 class GripperAlignment(Primitive):
@@ -71,9 +71,9 @@ class GripperAlignment(Primitive):
         ctx.estimator.learn_elasticity = False
         ctx.estimator.rotation = None
         self._hold = current_pose(obs)
-        self._cable: np.ndarray | None = None
+        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
         self._within_since: float | None = None
-        self._slack_since: float | None = None
+        self._slack = SlackWatch(1.0)
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Keep the tension, turn towards the cable, judge."""
@@ -83,25 +83,14 @@ class GripperAlignment(Primitive):
         q_target = me.orientation
         if state.taut:
             cable = -state.direction
-            self._cable = (
-                cable if self._cable is None else self._cable + SMOOTHING * (cable - self._cable)
-            )
+            smoothed = self._cable.update(obs.time, cable)
             x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
-            c = float(x_axis @ self._cable) / float(np.linalg.norm(self._cable))
+            c = float(x_axis @ smoothed) / norm3(smoothed)
             self.angle = math.acos(min(max(c, -1.0), 1.0))
-            q_target = multiply(shortest_arc(x_axis, self._cable), me.orientation)
+            q_target = turn_x_onto(me.orientation, smoothed)
         mine = Pose(self._hold[0 if self.arm == "left" else 1].position, q_target)
-        start = self._hold
-        desired = DualPose(mine, start.right) if self.arm == "left" else DualPose(start.left, mine)
-        left = self.arm == "left"
-        twist = ctx.controller(
-            current_pose(obs),
-            desired,
-            (self.force, None) if left else (None, self.force),
-            (state.force, None) if left else (None, state.force),
-            ctx.estimator.elasticity.k_hat,
-            (state.direction, None) if left else (None, state.direction),
-        )
+        desired = with_pose(self._hold, self.arm, mine)
+        twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
         return Command(twist)
 
@@ -117,13 +106,8 @@ class GripperAlignment(Primitive):
                 return
         else:
             self._within_since = None
-        if tension < 0.2 * self.force:
-            if self._slack_since is None:
-                self._slack_since = obs.time
-            elif obs.time - self._slack_since > 1.0:
-                self.outcome = Outcome.failure("slipped", "the cable went slack while aligning")
-        else:
-            self._slack_since = None
+        if self._slack.update(obs.time, tension, self.force):
+            self.outcome = Outcome.failure("slipped", "the cable went slack while aligning")
         if self.elapsed >= self.timeout - 1e-9 and not self.outcome.done:
             self.outcome = Outcome.failure(
                 "not_aligned",

@@ -12,7 +12,6 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
-from tautwire.estimation import ElasticityEstimator
 from tautwire.model import FeatureKind, PathGraph
 from tautwire.primitives.model_estimator import ModelEstimator
 
@@ -54,14 +53,8 @@ def rescale_elasticity(estimator: ModelEstimator, factor: float) -> None:
     stiffness of the new edge is k_hat * d_old / d_new and the fit's offset
     (the rest length) is stale: the estimator starts afresh from there.
     """
-    old = estimator.elasticity
-    estimator.elasticity = ElasticityEstimator(
-        force_noise=old.force_noise,
-        forgetting=old.forgetting,
-        k_initial=float(np.clip(old.k_hat * factor, old.k_min, old.k_max)),
-        k_range=(old.k_min, old.k_max),
-        min_length_change=old.min_length_change,
-    )
+    elasticity = estimator.elasticity
+    elasticity.reset(k_initial=elasticity.k_hat * factor)
 
 
 def add_point(
@@ -81,6 +74,32 @@ def add_point(
     point.kind, point.label = kind, label
     point.position = np.asarray(position, dtype=float).copy()
     graph.refresh()
+    return i
+
+
+def add_on_sensing_edge(
+    estimator: ModelEstimator,
+    arc_length: float,
+    position: FloatArray,
+    kind: FeatureKind,
+    label: str,
+) -> int:
+    """Insert a constrained point on the sensing gripper's edge (a grasp, a clip).
+
+    The gripper's edge now ends at the new point: shorter, so stiffer
+    (k d constant); the elasticity estimate restarts from k_hat d_old / d_new.
+
+    Returns:
+        The new point's index.
+    """
+    graph = estimator.graph
+    s = graph.arc_lengths()
+    c = estimator.contact_index
+    old = abs(float(s[estimator.gripper_index]) - float(s[c if c is not None else 0]))
+    i = add_point(graph, arc_length, position, kind, label)
+    new = abs(float(graph.arc_lengths()[estimator.gripper_index]) - arc_length)
+    if new > 0.0:
+        rescale_elasticity(estimator, old / new)
     return i
 
 

@@ -9,13 +9,14 @@ import numpy as np
 from tautwire.control import CoordinatedPose, Pose, coordinated_pose
 from tautwire.model.quaternion import orientation_along
 from tautwire.model.vector3 import norm3
+from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.clip_sensing import ClipHeight, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
-from tautwire.primitives.model_edits import add_point, drop_new_points, rescale_elasticity
+from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.parallel_tension import held_between_grippers
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.robot import Command, Observation
 
 #: Height [m] above the seat at which the cable is brought over the clip.
@@ -67,7 +68,7 @@ class ParallelClipping(Primitive):
         ctx.estimator.rotation = None
         self.phase = "align"
         self.drop = 0.0
-        self._slack_since: float | None = None
+        self._slack = SlackWatch(1.0)
         info = ctx.clips.get(self.clip)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
@@ -102,7 +103,7 @@ class ParallelClipping(Primitive):
         if self.outcome.done:
             return Command()
         sensor = obs.gripper(ctx.estimator.arm)
-        height = self.sensing.update(sensor.position, state.direction, state.taut)
+        height = self.sensing.update(obs.time, sensor.position, state.direction, state.taut)
         force = self._base_force
         now = coordinated_pose(current_pose(obs))
         if self.phase == "align":
@@ -128,8 +129,9 @@ class ParallelClipping(Primitive):
             self.drop = max(self.drop - 2.0 * PUSH_SPEED * ctx.control_period, 0.0)
             reached = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
             if self.drop <= 0.0 and reached and obs.time - self._since > 0.3:
-                self._verify(ctx, height, sensor.position)
-        self._check_slack(obs, state.tension, force)
+                self._verify(ctx, sensor.position)
+        if self._slack.update(obs.time, state.tension, force):
+            self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
         return Command(
             ctx.controller.coordinated(
                 current_pose(obs),
@@ -140,34 +142,16 @@ class ParallelClipping(Primitive):
             )
         )
 
-    def _check_slack(self, obs: Observation, tension: float, force: float) -> None:
-        if tension < 0.2 * force:
-            if self._slack_since is None:
-                self._slack_since = obs.time
-            elif obs.time - self._slack_since > 1.0:
-                self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
-        else:
-            self._slack_since = None
-
-    def _verify(self, ctx: PrimitiveContext, height: float | None, p_sensor: np.ndarray) -> None:
-        if not self.sensing.seated:
-            self.outcome = Outcome.failure(
-                "not_clipped",
-                f"the cable left {self.clip} when lifted"
-                f" ({1e3 * (height or 0.0):.1f} mm above its seat)",
-            )
+    def _verify(self, ctx: PrimitiveContext, p_sensor: np.ndarray) -> None:
+        verdict = self.sensing.verdict(self.clip)
+        if verdict.status != "success":
+            self.outcome = verdict
             return
+        # the clip lies on the straight cable from the sensing gripper, towards the other
         est = ctx.estimator
         drop_new_points(ctx.graph, self._known)
         g, c = est.gripper_index, est.contact_index
-        s = ctx.graph.arc_lengths()
-        old = abs(float(s[g]) - float(s[c or 0]))
         towards = 1.0 if c is not None and c > g else -1.0
-        arc = float(s[g]) + towards * float(np.linalg.norm(self.info.position - p_sensor))
-        add_point(ctx.graph, arc, self.info.position, "fixed", self.clip)
-        new = abs(float(ctx.graph.arc_lengths()[est.gripper_index]) - arc)
-        if new > 0.0:
-            rescale_elasticity(est, old / new)
-        self.outcome = Outcome.success(
-            f"clipped into {self.clip} (cable {1e3 * (height or 0.0):.1f} mm above the seat)"
-        )
+        arc = float(ctx.graph.arc_lengths()[g]) + towards * norm3(self.info.position - p_sensor)
+        add_on_sensing_edge(est, arc, self.info.position, "fixed", self.clip)
+        self.outcome = verdict

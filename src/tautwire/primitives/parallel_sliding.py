@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 
 from tautwire.control import coordinated_pose
+from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.parallel_tension import held_between_grippers
-from tautwire.primitives.single_arm_tension import current_pose
 from tautwire.primitives.sliding import SlidingPrimitive
 from tautwire.robot import Observation
 

@@ -8,10 +8,10 @@ import numpy as np
 
 from tautwire.control import coordinated_pose
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
 from tautwire.primitives.tension_judge import TensionJudge
 from tautwire.robot import Command, Observation
 

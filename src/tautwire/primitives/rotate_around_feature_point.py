@@ -7,30 +7,16 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import multiply, rotate
+from tautwire.model.quaternion import turn_x_onto
 from tautwire.model.vector3 import cross3, norm3
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.robot import Arm, Command, Observation
-
-
-def _shortest_arc(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """The smallest rotation [w, x, y, z] that turns direction ``a`` onto ``b``."""
-    a = a / norm3(a)
-    b = b / norm3(b)
-    c = float(a @ b)
-    if c < -1.0 + 1e-9:  # opposite: half turn about any axis normal to a
-        n = cross3(a, [1.0, 0.0, 0.0] if abs(a[0]) < 0.9 else [0.0, 1.0, 0.0])
-        n /= norm3(n)
-        return np.array([0.0, *n])
-    v = cross3(a, b)
-    q = np.array([1.0 + c, *v])
-    out: np.ndarray = q / math.sqrt(float(q @ q))
-    return out
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -102,7 +88,7 @@ class RotateAroundFeaturePoint(Primitive):
         self.slack_time = float(slack_time)
         self.turned = 0.0  # angle [rad] the cable's direction has turned so far
         self._previous: np.ndarray | None = None
-        self._slack_since: float | None = None
+        self._slack = SlackWatch(self.slack_time)
         self._ever_taut = False
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
@@ -113,7 +99,7 @@ class RotateAroundFeaturePoint(Primitive):
         ctx.estimator.rotation = (self.axis, math.copysign(1.0, self.angle))
         self.turned = 0.0
         self._previous = None
-        self._slack_since = None
+        self._slack.reset()
         self._ever_taut = False
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
@@ -138,21 +124,9 @@ class RotateAroundFeaturePoint(Primitive):
         step = math.copysign(speed, self.angle) / ctx.controller.motion.k_p
         target = state.contact + _rotate(me.position - state.contact, self.axis, step)
         # keep the tool x-axis along the cable (contact -> gripper), as measured
-        q_target = me.orientation
-        if state.taut:
-            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
-            q_target = multiply(_shortest_arc(x_axis, -state.direction), me.orientation)
-        current = current_pose(obs)
-        mine = Pose(target, q_target)
-        desired = (
-            DualPose(mine, current.right) if self.arm == "left" else DualPose(current.left, mine)
-        )
-        tensions = (self.force, None) if self.arm == "left" else (None, self.force)
-        forces = (state.force, None) if self.arm == "left" else (None, state.force)
-        directions = (state.direction, None) if self.arm == "left" else (None, state.direction)
-        twist = ctx.controller(
-            current, desired, tensions, forces, ctx.estimator.elasticity.k_hat, directions
-        )
+        q_target = turn_x_onto(me.orientation, -state.direction) if state.taut else me.orientation
+        desired = with_pose(current_pose(obs), self.arm, Pose(target, q_target))
+        twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
         return Command(twist)
 
@@ -172,12 +146,7 @@ class RotateAroundFeaturePoint(Primitive):
                 f"turned {math.degrees(self.turned):.0f} deg about {self.about or 'the contact'}"
             )
             return
-        if self._ever_taut and tension < 0.2 * self.force:
-            if self._slack_since is None:
-                self._slack_since = obs.time
-            elif obs.time - self._slack_since > self.slack_time:
-                self.outcome = Outcome.failure(
-                    "slipped", f"the cable went slack ({tension:.2f} N) while rotating"
-                )
-        else:
-            self._slack_since = None
+        if self._ever_taut and self._slack.update(obs.time, tension, self.force):
+            self.outcome = Outcome.failure(
+                "slipped", f"the cable went slack ({tension:.2f} N) while rotating"
+            )

@@ -6,17 +6,18 @@ import math
 
 import numpy as np
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import multiply, rotate, shortest_arc
+from tautwire.model.quaternion import turn_x_onto
 from tautwire.model.vector3 import norm3
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import ClipHeight, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
-from tautwire.primitives.model_edits import add_point, drop_new_points, rescale_elasticity
+from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
-from tautwire.primitives.single_arm_tension import current_pose
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.robot import Arm, Command, Observation
 
 #: Height [m] above the seat at which the cable is brought over the clip.
@@ -80,7 +81,7 @@ class SingleArmClipping(Primitive):
         self._angle0 = 0.0
         self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
         self._hold = current_pose(obs)
-        self._slack_since: float | None = None
+        self._slack = SlackWatch(1.0)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -89,8 +90,6 @@ class SingleArmClipping(Primitive):
         state = ctx.estimator.update(obs)
         c = state.contact
         self._contact = c.copy()
-        index = ctx.estimator.contact_index
-        self._contact_point = None if index is None else ctx.graph.points[index]
         self._known = [id(p) for p in ctx.graph.points]
         seat = info.position
         along = seat - c
@@ -146,7 +145,7 @@ class SingleArmClipping(Primitive):
         if self.outcome.done:
             return Command()
         me = obs.gripper(self.arm)
-        height = self.sensing.update(me.position, state.direction, state.taut)
+        height = self.sensing.update(obs.time, me.position, state.direction, state.taut)
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
@@ -180,57 +179,24 @@ class SingleArmClipping(Primitive):
             target = self._pivot(obs)
             settled = obs.time - self._since > 0.3
             if settled and self.angle <= self._angle0 and norm3(me.position - target) < 0.003:
-                self._verify(ctx, height)
-        self._check_slack(obs, state.tension, force)
-        q_target = me.orientation
-        if state.taut:
-            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
-            q_target = multiply(shortest_arc(x_axis, -state.direction), me.orientation)
-        mine = Pose(target, q_target)
-        start = self._hold
-        desired = DualPose(mine, start.right) if self.arm == "left" else DualPose(start.left, mine)
-        left = self.arm == "left"
-        twist = ctx.controller(
-            current_pose(obs),
-            desired,
-            (force, None) if left else (None, force),
-            (state.force, None) if left else (None, state.force),
-            ctx.estimator.elasticity.k_hat,
-            (state.direction, None) if left else (None, state.direction),
-        )
-        return Command(twist)
+                self._verify(ctx)
+        if self._slack.update(obs.time, state.tension, force):
+            self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
+        q_target = turn_x_onto(me.orientation, -state.direction) if state.taut else me.orientation
+        desired = with_pose(self._hold, self.arm, Pose(target, q_target))
+        return Command(tension_twist(ctx, obs, self.arm, desired, force, state))
 
-    def _check_slack(self, obs: Observation, tension: float, force: float) -> None:
-        if tension < 0.2 * force:
-            if self._slack_since is None:
-                self._slack_since = obs.time
-            elif obs.time - self._slack_since > 1.0:
-                self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
-        else:
-            self._slack_since = None
-
-    def _verify(self, ctx: PrimitiveContext, height: float | None) -> None:
-        if not self.sensing.seated:
-            self.outcome = Outcome.failure(
-                "not_clipped",
-                f"the cable left {self.clip} when lifted"
-                f" ({1e3 * (height or 0.0):.1f} mm above its seat)",
-            )
+    def _verify(self, ctx: PrimitiveContext) -> None:
+        verdict = self.sensing.verdict(self.clip)
+        if verdict.status != "success":
+            self.outcome = verdict
             return
+        # the clip lies on the straight cable from the contact, |q - c| along it
         est = ctx.estimator
         drop_new_points(ctx.graph, self._known)
-        g = est.gripper_index
-        c = next((i for i, p in enumerate(ctx.graph.points) if p is self._contact_point), None)
-        s = ctx.graph.arc_lengths()
-        s_c = float(s[c]) if c is not None else 0.0
-        old = abs(float(s[g]) - s_c)
-        arc = s_c + float(np.linalg.norm(self.info.position - self._contact)) * (
-            1.0 if c is None or c < g else -1.0
-        )
-        add_point(ctx.graph, arc, self.info.position, "fixed", self.clip)
-        new = abs(float(ctx.graph.arc_lengths()[est.gripper_index]) - arc)
-        if new > 0.0:
-            rescale_elasticity(est, old / new)
-        self.outcome = Outcome.success(
-            f"clipped into {self.clip} (cable {1e3 * (height or 0.0):.1f} mm above the seat)"
-        )
+        g, c = est.gripper_index, est.contact_index
+        s_c = float(ctx.graph.arc_lengths()[c]) if c is not None else 0.0
+        sense = 1.0 if c is None or c < g else -1.0
+        arc = s_c + sense * norm3(self.info.position - self._contact)
+        add_on_sensing_edge(est, arc, self.info.position, "fixed", self.clip)
+        self.outcome = verdict

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import Pose
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
-from tautwire.primitives.single_arm_tension import current_pose
 from tautwire.primitives.sliding import SlidingPrimitive
 from tautwire.robot import Arm, Observation
 
@@ -51,15 +51,7 @@ class SingleArmSliding(SlidingPrimitive):
         self, obs: Observation, ctx: PrimitiveContext, state: TensionState
     ) -> np.ndarray:
         """D's hybrid control with f_d = f_slid, holding the start pose otherwise."""
-        mine = self.arm == "left"
-        return ctx.controller(
-            current_pose(obs),
-            self._hold,
-            (self.friction_force, None) if mine else (None, self.friction_force),
-            (state.force, None) if mine else (None, state.force),
-            ctx.estimator.elasticity.k_hat,
-            (state.direction, None) if mine else (None, state.direction),
-        )
+        return tension_twist(ctx, obs, self.arm, self._hold, self.friction_force, state)
 
     def travel(self, obs: Observation) -> float:
         """Distance [m] moved along the sliding line."""
@@ -69,7 +61,6 @@ class SingleArmSliding(SlidingPrimitive):
         self, obs: Observation, ctx: PrimitiveContext, state: TensionState, moving: bool
     ) -> np.ndarray:
         """A set point that runs ahead on the sliding line at ``speed``."""
-        me = obs.gripper(self.arm)
         k_p = ctx.controller.motion.k_p
         if moving:
             # the P controller's lag is speed / k_p: lead the set point by it
@@ -80,12 +71,7 @@ class SingleArmSliding(SlidingPrimitive):
             self._start + ahead * self._away,
             self._start_pose[0 if self.arm == "left" else 1].orientation,
         )
-        start = self._start_pose
-        desired = (
-            DualPose(target, start.right) if self.arm == "left" else DualPose(start.left, target)
-        )
-        del me
-        return ctx.controller(current_pose(obs), desired)
+        return ctx.controller(current_pose(obs), with_pose(self._start_pose, self.arm, target))
 
     def hold_shift(self, ctx: PrimitiveContext) -> tuple[int, float]:
         """The gripper's point moves away from its contact along the arc."""

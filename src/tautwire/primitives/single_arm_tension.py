@@ -6,23 +6,17 @@ import math
 
 import numpy as np
 
-from tautwire.control import DualPose, Pose
+from tautwire.control import DualPose
 from tautwire.errors import InvalidArgumentError
+from tautwire.primitives.arm_control import current_pose, tension_twist
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.tension_judge import TensionJudge
 from tautwire.robot import Arm, Command, Observation
 
 #: Time constant [s] of the tension average that success is judged by.
 JUDGE_TIME = 0.1
-
-
-def current_pose(obs: Observation) -> DualPose:
-    """Both grippers' poses from an observation."""
-    return DualPose(
-        Pose(obs.left.position, obs.left.orientation),
-        Pose(obs.right.position, obs.right.orientation),
-    )
 
 
 class SingleArmTension(Primitive):
@@ -113,10 +107,8 @@ class SingleArmTension(Primitive):
         self.excitation_period = float(excitation_period)
         self._learning = False
         self._k_control = 1.0
-        self._judged: float | None = None  # the averaged tension [N]
-        self._last_time = 0.0
+        self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._desired: DualPose | None = None
-        self._within_since: float | None = None
         self._start_position = np.zeros(3)
         self._ever_taut = False
 
@@ -128,8 +120,7 @@ class SingleArmTension(Primitive):
         self._k_control = ctx.estimator.elasticity.k_hat
         self._desired = current_pose(obs)
         self._start_position = obs.gripper(self.arm).position.copy()
-        self._within_since = None
-        self._judged = None
+        self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._ever_taut = False
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
@@ -145,17 +136,7 @@ class SingleArmTension(Primitive):
         if elasticity.is_ready(max_relative_std=0.2):
             self._k_control = elasticity.k_hat
         f_d = self.set_point(self.elapsed)
-        tensions = (f_d, None) if self.arm == "left" else (None, f_d)
-        forces = (state.force, None) if self.arm == "left" else (None, state.force)
-        directions = (state.direction, None) if self.arm == "left" else (None, state.direction)
-        twist = ctx.controller(
-            current_pose(obs),
-            self._desired,
-            tensions,
-            forces,
-            self._k_control,
-            directions,
-        )
+        twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state, self._k_control)
         self._judge(obs, state.tension)
         if self.outcome.done and self.outcome.status == "success":
             ctx.tension = self.force
@@ -167,20 +148,8 @@ class SingleArmTension(Primitive):
         return self.force * (1.0 + self.excitation * math.sin(phase))
 
     def _judge(self, obs: Observation, tension: float) -> None:
-        if self._judged is None:
-            self._judged = tension
-        else:  # first-order average with time constant JUDGE_TIME
-            alpha = min(max(obs.time - self._last_time, 0.0) / JUDGE_TIME, 1.0)
-            self._judged += alpha * (tension - self._judged)
-        self._last_time = obs.time
-        tension = self._judged
-        band = max(self.tolerance * self.force, 0.05)
-        if abs(tension - self.force) <= band:
-            if self._within_since is None:
-                self._within_since = obs.time
-        else:
-            self._within_since = None
-        held = self._within_since is not None and obs.time - self._within_since >= self.hold_time
+        held = self._judge_tension.update(obs.time, tension)
+        tension = self._judge_tension.smoothed or 0.0
         if self.duration is not None:
             if self.elapsed >= self.duration:
                 self.outcome = (

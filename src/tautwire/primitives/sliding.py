@@ -21,10 +21,12 @@ import numpy as np
 from tautwire.control import GripForceController
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import move_hold, rescale_elasticity
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tension_judge import TensionJudge
 from tautwire.robot import Arm, Command, GripperCommand, Observation
 
@@ -34,9 +36,6 @@ NOMINAL_FRICTION = 0.5
 #: Fraction of the nominal grip force to start with (low: the cable starts
 #: sliding at once instead of stretching against a grip that is too firm).
 START_GRIP = 0.7
-#: Low-pass weight of a new tension sample (~0.05 s at 4 ms).
-SMOOTHING = 1.0 / 12.0
-
 #: Cable [m] that must remain beyond the sliding gripper at the end.
 MIN_BEYOND = 0.02
 
@@ -108,9 +107,9 @@ class SlidingPrimitive(Primitive):
         self._tension_judge = TensionJudge(self.friction_force, 0.15, 0.2)
         self._slide_start = 0.0
         self.slid = 0.0
-        self._smoothed: float | None = None
+        self._tension: LowPass[float] = LowPass()
         self._judged: list[float] = []
-        self._slack_since: float | None = None
+        self._slack = SlackWatch(self.slack_time)
         self._regrip_at = 0.0
         state = ctx.estimator.update(obs)
         self._start_tension = state.tension
@@ -155,11 +154,7 @@ class SlidingPrimitive(Primitive):
         if self.outcome.done:
             return Command()
         tension = state.tension
-        self._smoothed = (
-            tension
-            if self._smoothed is None
-            else self._smoothed + SMOOTHING * (tension - self._smoothed)
-        )
+        smoothed = self._tension.update(obs.time, tension)
         if self.phase == "tension":
             # first the tension that the sliding will keep, with a firm grip:
             # a soft cable would otherwise slide slack for most of the way
@@ -174,8 +169,11 @@ class SlidingPrimitive(Primitive):
             moving = travelled < self.distance
             grip = self.grip.update(self.friction_force, tension, ctx.control_period)
             if obs.time - self._slide_start > self.settle_time:
-                self._judged.append(self._smoothed)
-                self._check_slack(obs, tension)
+                self._judged.append(smoothed)
+                if self._slack.update(obs.time, tension, self.friction_force):
+                    self.outcome = Outcome.failure(
+                        "slipped", f"the tension vanished ({tension:.2f} N) while sliding"
+                    )
             if not moving:
                 self.phase = "regrip"
                 self._regrip_at = obs.time
@@ -195,17 +193,6 @@ class SlidingPrimitive(Primitive):
         if self.slide_arm == "left":
             return Command(twist, left=slide_grip)
         return Command(twist, right=slide_grip)
-
-    def _check_slack(self, obs: Observation, tension: float) -> None:
-        if tension < 0.2 * self.friction_force:
-            if self._slack_since is None:
-                self._slack_since = obs.time
-            elif obs.time - self._slack_since > self.slack_time:
-                self.outcome = Outcome.failure(
-                    "slipped", f"the tension vanished ({tension:.2f} N) while sliding"
-                )
-        else:
-            self._slack_since = None
 
     def _finish(self, obs: Observation, ctx: PrimitiveContext, tension: float) -> None:
         if obs.gripper(self.slide_arm).opening < 1e-4:

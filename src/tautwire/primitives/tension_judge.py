@@ -2,10 +2,7 @@
 
 from __future__ import annotations
 
-#: Weight of a new sample in the low-passed tension (time constant 12 control
-#: periods, ~0.05 s at 4 ms): single samples carry the sensor's noise, not
-#: the tension's level.
-SMOOTHING = 1.0 / 12.0
+from tautwire.primitives.low_pass import TIME_CONSTANT, LowPass
 
 
 class TensionJudge:
@@ -15,22 +12,31 @@ class TensionJudge:
         force: Set point f_d [N].
         tolerance: Allowed error, a fraction of ``force`` (at least 0.05 N).
         hold_time: How long [s] the tension must stay within the band.
+        time_constant: Of the low-pass [s] the tension is judged on.
     """
 
-    def __init__(self, force: float, tolerance: float = 0.1, hold_time: float = 0.5) -> None:
+    def __init__(
+        self,
+        force: float,
+        tolerance: float = 0.1,
+        hold_time: float = 0.5,
+        time_constant: float = TIME_CONSTANT,
+    ) -> None:
         self.force = float(force)
         self.band = max(float(tolerance) * self.force, 0.05)
         self.hold_time = float(hold_time)
-        self.smoothed: float | None = None
+        self._low_pass: LowPass[float] = LowPass(time_constant)
         self._within_since: float | None = None
+
+    @property
+    def smoothed(self) -> float | None:
+        """The low-passed tension [N] (None before the first sample)."""
+        return self._low_pass.value
 
     def update(self, time: float, tension: float) -> bool:
         """Add the tension [N] measured at ``time`` [s]; True once it has been held."""
-        if self.smoothed is None:
-            self.smoothed = tension
-        else:
-            self.smoothed += SMOOTHING * (tension - self.smoothed)
-        if abs(self.smoothed - self.force) <= self.band:
+        smoothed = self._low_pass.update(time, tension)
+        if abs(smoothed - self.force) <= self.band:
             if self._within_since is None:
                 self._within_since = time
         else:
