@@ -36,6 +36,8 @@ MASS_PER_LENGTH = 0.03  # kg/m
 RADIUS = 0.0025  # m
 FORCE_NOISE = 0.05  # N
 FORCE_LIMIT = 15.0  # N
+#: F: a clip needs at most the tension this much more stretch [m] of the held span gives.
+FEASIBLE_STRETCH = 0.05
 #: Margin [m] kept from the workspace's faces.
 MARGIN = 0.05
 
@@ -460,7 +462,7 @@ def scene_f(seed: int) -> TrialScene:
     draw = _Draw(seed)
     cable = _cable(draw)
     length = float(cable["length"])
-    push = draw.uniform("push_force", 1.0, 4.0)
+    share = float(draw.rng.uniform(0.0, 1.0))  # where the clip's push force lies in its range
     for _ in range(1000):
         anchor = np.array(
             [
@@ -485,6 +487,12 @@ def scene_f(seed: int) -> TrialScene:
     draw.point("gripper", gripper)
     draw.point("clip", seat)
     draw.inputs["hold_at"] = round(at, 6)
+    # one arm presses with the held span's tension only: a clip needs at
+    # most what FEASIBLE_STRETCH more stretch of that span gives (1-4 N)
+    span_stiffness = float(cable["stiffness"]) * length / at
+    top = min(max(FEASIBLE_STRETCH * span_stiffness, 1.0), 4.0)
+    push = 1.0 + share * (top - 1.0)
+    draw.inputs["push_force"] = round(push, 6)
     slot = yaw + draw.uniform("slot_offset", -math.radians(10.0), math.radians(10.0))
     cable.update(start="A1", held_by={"arm": "left", "at": at})
     force = draw.uniform("force", 1.5, 3.0)

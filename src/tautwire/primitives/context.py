@@ -22,6 +22,7 @@ from tautwire.estimation import (
 from tautwire.model import PathGraph
 from tautwire.primitives.model_estimator import ModelEstimator
 from tautwire.robot import Arm
+from tautwire.scenario.models import CLIP_LENGTH
 
 FloatArray = NDArray[np.float64]
 
@@ -40,7 +41,7 @@ class ClipInfo:
     position: FloatArray
     yaw: float
     push_force: float
-    length: float = 0.012
+    length: float = CLIP_LENGTH
 
     @property
     def slot(self) -> FloatArray:

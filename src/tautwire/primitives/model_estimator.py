@@ -49,6 +49,10 @@ FloatArray = NDArray[np.float64]
 SAME_CONTACT = 0.03
 
 
+#: Largest distance [m] between a fixture's design position and a trusted estimate of it.
+DESIGN_GATE = 0.03
+
+
 @dataclass
 class TensionState:
     """What the latest observation says about the sensing gripper's edge.
@@ -141,6 +145,7 @@ class ModelEstimator:
         self._gripper_positions: dict[str, FloatArray] = {}
         #: The feature point that the contact filter estimates (None: none yet).
         self._filter_point: FeaturePoint | None = None
+        self._design: FloatArray | None = None  # design position of the filter's point
 
     # ----------------------------------------------------------------- graph
     @property
@@ -189,9 +194,23 @@ class ModelEstimator:
             point is self._filter_point
             and kf.running
             and max(P[0, 0], P[1, 1], P[2, 2]) <= self.trusted_std**2
+            and self._agrees_with_design()
         ):
             return kf.x.copy()
         return point.position.copy()
+
+    def _agrees_with_design(self) -> bool:
+        """Whether the filter's estimate of a fixture of the board design is near its design.
+
+        Lines from a gripper that only pulls along the cable (tensioning) are
+        nearly parallel: small systematic errors (sag, vibration) can make
+        them meet far along the cable, with a small covariance. An estimate
+        further than ``DESIGN_GATE`` from the design position is not trusted.
+        A point found by the filter alone has no design: always True.
+        """
+        if self._design is None:
+            return True
+        return norm3(self.contact_filter.x - self._design) <= DESIGN_GATE
 
     def _track(self, c: int | None) -> bool:
         """Point the contact filter at point ``c``; False if ``c`` needs no filter.
@@ -207,6 +226,7 @@ class ModelEstimator:
         if point is not self._filter_point:
             self.contact_filter.reset()
             self._filter_point = point
+            self._design = None if point.label == "estimated" else point.position.copy()
             self._sum_p[:] = 0.0
             self._sum_f[:] = 0.0
             self._n = 0
@@ -378,6 +398,7 @@ class ModelEstimator:
         point = self.graph.points[i]
         point.kind, point.label, point.position = "contact", label, estimate.copy()
         self._filter_point = point  # the filter, restarted on the change, estimates it
+        self._design = None
         return True
 
     def _update_graph(self, obs: Observation, g: int, c: int | None) -> None:
@@ -389,7 +410,12 @@ class ModelEstimator:
             elif pt.kind in ("fixed", "contact"):
                 constraints[i] = pt.position
         kf = self.contact_filter
-        if kf.running and c is not None and self.graph.points[c] is self._filter_point:
+        if (
+            kf.running
+            and c is not None
+            and self.graph.points[c] is self._filter_point
+            and self._agrees_with_design()
+        ):
             constraints[c] = kf.x.copy()
             self.graph.points[c].covariance = kf.P.copy()
         update_by_constraints(self.graph, constraints)

@@ -24,12 +24,16 @@ from tautwire.robot import Arm, Command, Observation
 ABOVE = 0.015
 #: Rate [rad/s] at which the gripper pivots down about the clip while pushing.
 PUSH_RATE = 0.15
+#: Pivot angle [rad] pressed on past the felt snap (and deeper on each new attempt).
+PRESS_EXTRA = 0.05
+#: Pushes before a cable that did not stay in counts as not clipped.
+ATTEMPTS = 3
 #: Steepest angle [rad] of the cable below the clip before giving up.
 MAX_ANGLE = math.radians(60.0)
 #: Height [m] above the seat of the pivot: about the jaws' top.
 JAW_TOP = 0.008
-#: Lowest height [m] above the table the gripper may go.
-TABLE_CLEARANCE = 0.015
+#: Lowest height [m] above the table the gripper may go (lower, its cable lies on the table).
+TABLE_CLEARANCE = 0.03
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
 
@@ -79,6 +83,10 @@ class SingleArmClipping(Primitive):
         self.phase = "align"
         self.angle = 0.0
         self._angle0 = 0.0
+        self._angle_rest = 0.0
+        self._deeper = 0.0  # the snap counts only beyond this pivot angle [rad]
+        self._pressed_to = 0.0
+        self.attempts = 1
         self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
         self._hold = current_pose(obs)
         self._slack = SlackWatch(1.0)
@@ -160,14 +168,26 @@ class SingleArmClipping(Primitive):
                 offset = me.position - self._exit
                 self._angle0 = math.atan2(-float(offset[2]), float(offset @ self._out))
                 self.angle = self._angle0
-        elif self.phase == "push":
+                self._deeper = self._angle0 + 0.05
+                # lift back only to the straight line from the contact through
+                # the seat: a clipped cable then lies in the seat unloaded
+                # (a weak clip is not pulled open), an unclipped one on the jaws
+                rise = float(self._contact[2] - self.info.position[2])
+                run = float(np.hypot(*(self.info.position - self._contact)[:2]))
+                self._angle_rest = max(math.atan2(rise, run), self._angle0)
+        elif self.phase in ("push", "press"):
             force = self.force
-            self.angle = self._angle0 + PUSH_RATE * (obs.time - self._since)
+            self.angle += PUSH_RATE * ctx.control_period
             target = self._pivot(obs)
-            if self.angle > self._angle0 + 0.05 and self.sensing.seated:
-                self.phase, self._since = "lift", obs.time
-            elif self.angle > MAX_ANGLE or me.position[2] < self.floor:
-                where = "the table" if me.position[2] < self.floor else "the steepest bend"
+            if self.phase == "press":
+                if self.angle >= self._pressed_to:
+                    self.phase, self._since = "lift", obs.time
+            elif self.angle > self._deeper and self.sensing.seated:
+                # felt the snap: press on a little (the line's height is
+                # a few mm uncertain), then lift and verify
+                self.phase, self._pressed_to = "press", self.angle + PRESS_EXTRA
+            elif self.angle > MAX_ANGLE or target[2] < self.floor:
+                where = "the table" if target[2] < self.floor else "the steepest bend"
                 self.outcome = Outcome.failure(
                     "not_clipped",
                     f"no snap felt into {self.clip} down to {where}"
@@ -175,11 +195,16 @@ class SingleArmClipping(Primitive):
                     " closer to the clip or tension it more",
                 )
         else:  # lift back over the clip and feel whether the cable stayed in
-            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle0)
+            rest = self._angle_rest
+            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, rest)
             target = self._pivot(obs)
             settled = obs.time - self._since > 0.3
-            if settled and self.angle <= self._angle0 and norm3(me.position - target) < 0.003:
-                self._verify(ctx)
+            if settled and self.angle <= rest and norm3(me.position - target) < 0.003:
+                if self.sensing.seated or self.attempts >= ATTEMPTS:
+                    self._verify(ctx)
+                else:  # not in: push again, deeper than the last time
+                    self.attempts += 1
+                    self.phase, self._deeper = "push", self._pressed_to + PRESS_EXTRA
         if self._slack.update(obs.time, state.tension, force):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
         q_target = turn_x_onto(me.orientation, -state.direction) if state.taut else me.orientation

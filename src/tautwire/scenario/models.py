@@ -143,6 +143,11 @@ class Peg(_Model):
     height: float = Field(gt=0.0, description="peg height [m]")
 
 
+#: Length [m] of a clip along its slot (one design for every clip; the cable
+#: model's segments, 2 cm at rest, must not be able to span it).
+CLIP_LENGTH = 0.03
+
+
 class Clip(_Model):
     """A snap-in clip whose slot opens upwards.
 

@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.scenario.models import CLIP_LENGTH
 
 
 @dataclass(frozen=True)
@@ -81,7 +82,7 @@ class SimOptions:
     settle_damping_time: float = 0.1
     settle_speed: float = 1e-3
     max_speed: float = 100.0
-    clip_length: float = 0.012
+    clip_length: float = CLIP_LENGTH
 
     def __post_init__(self) -> None:
         for f in fields(self):
