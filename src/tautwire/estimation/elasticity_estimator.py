@@ -69,6 +69,9 @@ import math
 
 from tautwire.errors import InvalidArgumentError
 
+#: Relative std of k below which k_hat becomes :attr:`ElasticityEstimator.k_trusted`.
+TRUSTED_RELATIVE_STD = 0.2
+
 
 class ElasticityEstimator:
     """Recursive least-squares estimate of an edge's spring constant k [N/m].
@@ -147,6 +150,7 @@ class ElasticityEstimator:
         self._sum_l = 0.0
         self._m = 0
         self.samples_used = 0
+        self._k_trusted = self._k0
 
     @property
     def k_hat(self) -> float:
@@ -155,6 +159,17 @@ class ElasticityEstimator:
         if not math.isfinite(k):
             return self.k_min
         return min(max(k, self.k_min), self.k_max)
+
+    @property
+    def k_trusted(self) -> float:
+        """The latest k_hat [N/m] known to ``TRUSTED_RELATIVE_STD``, else the prior.
+
+        The gain of a force controller: a fit that has not converged (a
+        stiff cable barely changes length under the sensor's noise) can read
+        anything from k_min up, and a gain lambda / k_min would make the
+        controller chatter at the speed limit.
+        """
+        return self._k_trusted
 
     @property
     def variance(self) -> float:
@@ -234,4 +249,6 @@ class ElasticityEstimator:
         self._p01 = (self._p01 - k0 * pphi1) / lam
         self._p11 = (self._p11 - k1 * pphi1) / lam
         self.samples_used += 1
+        if self.is_ready(TRUSTED_RELATIVE_STD):
+            self._k_trusted = self.k_hat
         return self.k_hat

@@ -51,7 +51,7 @@ def tension_twist(
         desired: Set points of both grippers (motion control).
         force: Desired tension f_d [N] along the cable.
         state: The model estimator's tension state of ``arm``'s edge.
-        k_hat: Stiffness [N/m] for the force gain; default the estimate.
+        k_hat: Stiffness [N/m] for the force gain; default the trusted estimate.
     """
     left = arm == "left"
     return ctx.controller(
@@ -59,6 +59,6 @@ def tension_twist(
         desired,
         (force, None) if left else (None, force),
         (state.force, None) if left else (None, state.force),
-        ctx.estimator.elasticity.k_hat if k_hat is None else k_hat,
+        ctx.estimator.elasticity.k_trusted if k_hat is None else k_hat,
         (state.direction, None) if left else (None, state.direction),
     )

@@ -47,14 +47,14 @@ def move_hold(graph: PathGraph, index: int, delta: float) -> None:
 
 
 def rescale_elasticity(estimator: ModelEstimator, factor: float) -> None:
-    """Restart the elasticity estimate at ``factor`` times its current k_hat.
+    """Restart the elasticity estimate at ``factor`` times its trusted k_hat.
 
     After the gripper's edge changed length (sliding, a new contact), the
-    stiffness of the new edge is k_hat * d_old / d_new and the fit's offset
+    stiffness of the new edge is k * d_old / d_new and the fit's offset
     (the rest length) is stale: the estimator starts afresh from there.
     """
     elasticity = estimator.elasticity
-    elasticity.reset(k_initial=elasticity.k_hat * factor)
+    elasticity.reset(k_initial=elasticity.k_trusted * factor)
 
 
 def add_point(

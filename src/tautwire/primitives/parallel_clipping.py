@@ -138,7 +138,7 @@ class ParallelClipping(Primitive):
                 self._desired(obs),
                 force,
                 state.tension,
-                ctx.estimator.elasticity.k_hat,
+                ctx.estimator.elasticity.k_trusted,
             )
         )
 

@@ -55,7 +55,7 @@ class ParallelSliding(SlidingPrimitive):
             self._desired,
             self.friction_force,
             state.tension,
-            ctx.estimator.elasticity.k_hat,
+            ctx.estimator.elasticity.k_trusted,
         )
 
     @staticmethod

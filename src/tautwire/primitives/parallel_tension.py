@@ -89,7 +89,7 @@ class ParallelTension(Primitive):
             self._desired,
             self.force,
             state.tension,
-            ctx.estimator.elasticity.k_hat,
+            ctx.estimator.elasticity.k_trusted,
         )
         if self._judge.update(obs.time, state.tension):
             self.outcome = Outcome.success(

@@ -49,7 +49,9 @@ class RotateAroundFeaturePoint(Primitive):
         force: Tension set point [N]; default the context's (from D) or 3 N.
         about: Name of the fixture the rotation is about (a label only).
         slack_time: Longest time [s] the cable may be slack.
-        timeout: Longest run time [s]; default three times the nominal time.
+        timeout: Longest run time [s]; default three times the nominal time
+            (at ``speed``, or slower where the speed limit on the circle's
+            radius asks for it) plus 5 s.
     """
 
     name = "rotate_around_feature_point"
@@ -77,8 +79,8 @@ class RotateAroundFeaturePoint(Primitive):
             raise InvalidArgumentError(f"axis must be a non-zero 3-vector, got {axis!r}")
         if force is not None and not (force > 0.0 and math.isfinite(force)):
             raise InvalidArgumentError(f"force must be > 0 N, got {force}")
-        nominal = abs(angle) / speed
-        super().__init__(timeout if timeout is not None else 3.0 * nominal + 5.0)
+        super().__init__(timeout if timeout is not None else 3.0 * abs(angle) / speed + 5.0)
+        self._default_timeout = timeout is None
         self.arm: Arm = arm
         self.angle = float(angle)
         self.axis = a / norm3(a)
@@ -101,6 +103,14 @@ class RotateAroundFeaturePoint(Primitive):
         self._previous = None
         self._slack.reset()
         self._ever_taut = False
+        if self._default_timeout:
+            # the nominal time at the speed the gripper's speed limit allows on this circle
+            contact = ctx.estimator.contact_position()
+            p_gripper = obs.gripper(self.arm).position
+            offset = p_gripper - (p_gripper if contact is None else contact)
+            radius = float(norm3(offset - self.axis * float(self.axis @ offset)))
+            speed = min(self.speed, self._speed_limit(ctx) / max(radius, 1e-3))
+            self.timeout = 3.0 * abs(self.angle) / speed + 5.0
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -118,7 +128,7 @@ class RotateAroundFeaturePoint(Primitive):
         offset = me.position - state.contact
         radius = float(norm3(offset - self.axis * float(self.axis @ offset)))
         speed = self.speed
-        limit = 0.9 * float(min(ctx.limits.max_linear_speed))
+        limit = self._speed_limit(ctx)
         if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
             speed = limit / radius
         step = math.copysign(speed, self.angle) / ctx.controller.motion.k_p
@@ -129,6 +139,11 @@ class RotateAroundFeaturePoint(Primitive):
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
         return Command(twist)
+
+    @staticmethod
+    def _speed_limit(ctx: PrimitiveContext) -> float:
+        """The gripper speed [m/s] the circle is planned for: 90 % of the limit."""
+        return 0.9 * float(min(ctx.limits.max_linear_speed))
 
     def _track_angle(self, radial: np.ndarray) -> None:
         if self._previous is not None and norm3(radial) > 1e-6:

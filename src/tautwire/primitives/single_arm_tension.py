@@ -46,9 +46,9 @@ class SingleArmTension(Primitive):
       a 1000 N/m cable at 2 N by +-0.1 mm, enough for k to within a few per
       cent in 2-4 s, and stays well inside the success band. 0 turns it off.
 
-    The controller uses k_hat once the estimate is known to 20 % (before
-    that, the estimate D started with), so a fit from the first few samples
-    cannot make it unstable.
+    The controller's gain uses the latest k_hat known to 20 %
+    (:attr:`ElasticityEstimator.k_trusted`; before that, the prior), so a
+    fit from the first few samples cannot make it unstable.
 
     Success: the tension, averaged over ``JUDGE_TIME`` (0.1 s: the sensor's
     noise is not the tension leaving the band), stays within ``tolerance`` of
@@ -106,7 +106,6 @@ class SingleArmTension(Primitive):
         self.excitation = float(excitation)
         self.excitation_period = float(excitation_period)
         self._learning = False
-        self._k_control = 1.0
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._desired: DualPose | None = None
         self._start_position = np.zeros(3)
@@ -117,7 +116,6 @@ class SingleArmTension(Primitive):
         ctx.estimator.learn_elasticity = False  # until the tension is near f_d
         ctx.estimator.rotation = None
         self._learning = False
-        self._k_control = ctx.estimator.elasticity.k_hat
         self._desired = current_pose(obs)
         self._start_position = obs.gripper(self.arm).position.copy()
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
@@ -132,11 +130,8 @@ class SingleArmTension(Primitive):
         if not self._learning and state.taut and abs(state.tension - self.force) <= band:
             self._learning = True
             ctx.estimator.learn_elasticity = True
-        elasticity = ctx.estimator.elasticity
-        if elasticity.is_ready(max_relative_std=0.2):
-            self._k_control = elasticity.k_hat
         f_d = self.set_point(self.elapsed)
-        twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state, self._k_control)
+        twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state)
         self._judge(obs, state.tension)
         if self.outcome.done and self.outcome.status == "success":
             ctx.tension = self.force

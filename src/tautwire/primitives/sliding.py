@@ -208,7 +208,7 @@ class SlidingPrimitive(Primitive):
             )
             return
         # rest length that slid: the travel minus the change of the elastic stretch
-        k = ctx.estimator.elasticity.k_hat
+        k = ctx.estimator.elasticity.k_trusted
         stretch_change = (tension - self._start_tension) / k if k > 0.0 else 0.0
         self.slid = max(self._travelled - stretch_change, 0.0)
         index, sense = self.hold_shift(ctx)
