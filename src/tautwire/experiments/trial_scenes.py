@@ -211,11 +211,15 @@ def _anchor_and_hold(
 
 
 def _two_holds(
-    draw: _Draw, span_range: tuple[float, float], tail_max: float = 0.25
+    draw: _Draw,
+    span_range: tuple[float, float],
+    tail_max: float = 0.25,
+    long_tail: float = 0.0,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
     """A cable with free ends held by both grippers, slack between them.
 
-    The left gripper (with the sensor) holds at s1, the right at s2 > s1.
+    The left gripper (with the sensor) holds at s1, the right at s2 > s1;
+    one of the two free ends is at least ``long_tail`` [m] long.
     Returns the left and right start positions, the unit direction left ->
     right and the cable's fields.
     """
@@ -229,6 +233,8 @@ def _two_holds(
         if low > high:
             continue
         s1 = float(draw.rng.uniform(low, high))
+        if max(s1, tails - s1) < long_tail:
+            continue
         slack = float(draw.rng.uniform(0.85, 0.97))
         yaw = float(draw.rng.uniform(-math.pi, math.pi))
         u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
@@ -292,7 +298,7 @@ def scene_a(seed: int) -> TrialScene:
 def scene_b(seed: int) -> TrialScene:
     """B: tension (A), then part the grippers letting the cable slide through one."""
     draw = _Draw(seed)
-    left, right, u, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3)
+    left, right, u, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3, long_tail=0.1)
     force = draw.uniform("force", 1.5, 3.0)
     holds = cable["held_by"]
     tails = {"left": holds[0]["at"], "right": cable["length"] - holds[1]["at"]}
