@@ -13,6 +13,7 @@ from tautwire.model.quaternion import orientation_along
 from tautwire.model.tension import G as GRAVITY
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -78,6 +79,7 @@ class GraspTensioned(Primitive):
         ctx.estimator.rotation = None
         self.phase = "approach"
         self._phase_since = obs.time
+        self._tension: LowPass[float] = LowPass()
         self._hold = current_pose(obs)
         est = ctx.estimator
         if self.arm == est.arm:
@@ -117,6 +119,7 @@ class GraspTensioned(Primitive):
         if self.outcome.done:
             return Command()
         sensing = ctx.estimator.arm
+        tension = self._tension.update(obs.time, state.tension)  # the fingers shake the cable
         me = obs.gripper(self.arm)
         goal, q = self._goal(ctx, state.tension)
         self.goal = goal
@@ -134,7 +137,7 @@ class GraspTensioned(Primitive):
             target = me.position
             fingers = GripperCommand("hold")
             if obs.time - self._phase_since >= 0.2:
-                self._confirm(obs, ctx, state.tension)
+                self._confirm(obs, ctx, tension)
         desired = with_pose(self._hold, self.arm, Pose(target, q))
         twist = tension_twist(ctx, obs, sensing, desired, self.force, state)
         if self.phase == "close":  # hold still while the fingers close
