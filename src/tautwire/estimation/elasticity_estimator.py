@@ -162,14 +162,18 @@ class ElasticityEstimator:
 
     @property
     def k_trusted(self) -> float:
-        """The latest k_hat [N/m] known to ``TRUSTED_RELATIVE_STD``, else the prior.
+        """Stiffness [N/m] for a force controller's gain lambda / k.
 
-        The gain of a force controller: a fit that has not converged (a
-        stiff cable barely changes length under the sensor's noise) can read
-        anything from k_min up, and a gain lambda / k_min would make the
-        controller chatter at the speed limit.
+        k_hat once it is known to ``TRUSTED_RELATIVE_STD``; before that, the
+        larger of k_hat and the latest such value (at first the prior). A fit
+        that has not converged (a stiff cable barely changes length under
+        the sensor's noise) can read anything from k_min up: a gain
+        lambda / k_min made the controller chatter at the speed limit, while
+        too large a k only makes it slower. So the gain errs on the slow side.
         """
-        return self._k_trusted
+        if self.is_ready(TRUSTED_RELATIVE_STD):
+            return self.k_hat
+        return max(self._k_trusted, self.k_hat)
 
     @property
     def variance(self) -> float:
