@@ -171,8 +171,7 @@ class ElasticityEstimator:
         lambda / k_min made the controller chatter at the speed limit, while
         too large a k only makes it slower. So the gain errs on the slow side.
         """
-        if self.is_ready(TRUSTED_RELATIVE_STD):
-            return self.k_hat
+        # once ready, the fit stored k_hat here: the max is k_hat itself
         return max(self._k_trusted, self.k_hat)
 
     @property

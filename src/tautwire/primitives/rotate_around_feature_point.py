@@ -107,8 +107,7 @@ class RotateAroundFeaturePoint(Primitive):
             # the nominal time at the speed the gripper's speed limit allows on this circle
             contact = ctx.estimator.contact_position()
             p_gripper = obs.gripper(self.arm).position
-            offset = p_gripper - (p_gripper if contact is None else contact)
-            radius = float(norm3(offset - self.axis * float(self.axis @ offset)))
+            radius = self._radius(p_gripper, p_gripper if contact is None else contact)
             speed = min(self.speed, self._speed_limit(ctx) / max(radius, 1e-3))
             self.timeout = 3.0 * abs(self.angle) / speed + 5.0
 
@@ -125,8 +124,7 @@ class RotateAroundFeaturePoint(Primitive):
             self._track_angle(radial)
         # set point ahead on the circle: P control with gain k_p then moves
         # tangentially at speed * radius (feed-forward through the set point)
-        offset = me.position - state.contact
-        radius = float(norm3(offset - self.axis * float(self.axis @ offset)))
+        radius = self._radius(me.position, state.contact)
         speed = self.speed
         limit = self._speed_limit(ctx)
         if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
@@ -139,6 +137,11 @@ class RotateAroundFeaturePoint(Primitive):
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
         return Command(twist)
+
+    def _radius(self, p_gripper: np.ndarray, contact: np.ndarray) -> float:
+        """Radius [m] of the circle about ``contact``'s axis through ``p_gripper``."""
+        offset = p_gripper - contact
+        return float(norm3(offset - self.axis * float(self.axis @ offset)))
 
     @staticmethod
     def _speed_limit(ctx: PrimitiveContext) -> float:

@@ -45,15 +45,19 @@ class SingleArmClipping(Primitive):
     the gripper. With D's force control along the cable, the gripper first
     moves on the sphere about c (radius: what the tension leaves) until the
     cable's straight line passes ``ABOVE`` over the clip's seat q, along the
-    slot; then it pivots down about c, lowering that line through the clip
-    at ``PUSH_SPEED`` with the tension raised to twice the clip's push force
+    slot; then it pivots down about the clip's exit at ``PUSH_RATE``, with
+    the tension raised to three times the clip's push force
     (:func:`push_tension`). The snap is felt (:class:`ClipHeight`): the
-    force's line drops from the jaws to the seat. The gripper then returns
-    above the clip; if the force's line still bends down to the seat, the
-    cable is in. The model gets a fixed point at q.
+    force's line drops from the jaws to the seat. The gripper presses on by
+    ``PRESS_EXTRA``, then lifts back to the straight line from c through
+    the seat (a clipped cable lies there unloaded; an unclipped one rests on
+    the jaws); if the force's line still reaches the seat, the cable is in
+    and the model gets a fixed point at q. If not, it pushes again, deeper,
+    up to ``ATTEMPTS`` times.
 
-    Failure: ``not_clipped`` if no snap is felt down to ``MAX_DEPTH`` or the
-    cable came out when lifted; ``precondition`` if the clip is not between
+    Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
+    table (``TABLE_CLEARANCE``), or the cable did not stay in after the last
+    attempt; ``precondition`` if the clip is not between
     the contact and the gripper or its slot is across the cable;
     ``slipped`` if the cable goes slack; ``timeout``.
 
