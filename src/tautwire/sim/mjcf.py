@@ -340,7 +340,7 @@ def scene_model(world: WorldSpec, options: SimOptions) -> SceneModel:
     xml = (
         '<mujoco model="tautwire">'
         f'<option timestep="{options.timestep:.9g}" integrator="discrete" cone="elliptic"'
-        ' impratio="10" gravity="0 0 -9.81"/>'
+        f' tolerance="{options.solver_tolerance:.3g}" impratio="10" gravity="0 0 -9.81"/>'
         '<visual><global offwidth="1280" offheight="960"/><quality shadowsize="2048"/></visual>'
         '<asset><texture name="grid" type="2d" builtin="checker" width="256" height="256"'
         ' rgb1="0.82 0.74 0.6" rgb2="0.78 0.7 0.56"/>'

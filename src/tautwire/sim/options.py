@@ -58,6 +58,13 @@ class SimOptions:
         max_speed: Any degree of freedom faster than this [m/s or rad/s]
             counts as divergence.
         clip_length: Length of a clip along its slot [m].
+        solver_tolerance: MuJoCo's ``opt.tolerance``, which also ends the
+            iterative M+K solve of the flex (MuJoCo 4's discrete integrator).
+            The held vertex is tied to the gripper by a stiff ``connect``
+            (constraint regulariser R ~ 1e-3), so an acceleration error of
+            1e-2 m/s^2 there reads as 10 N: at MuJoCo's default 1e-8 a stiff
+            cable's reading jumped by up to 18 N for one physics step while
+            the cable itself moved smoothly. 1e-10 removes these spikes.
     """
 
     timestep: float = 0.001
@@ -83,6 +90,7 @@ class SimOptions:
     settle_speed: float = 1e-3
     max_speed: float = 100.0
     clip_length: float = CLIP_LENGTH
+    solver_tolerance: float = 1e-10
 
     def __post_init__(self) -> None:
         for f in fields(self):
