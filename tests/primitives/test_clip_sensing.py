@@ -1,7 +1,17 @@
+import math
+
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
-from tautwire.primitives.clip_sensing import ClipHeight, height_at_clip, push_tension
+from tautwire.primitives.clip_sensing import (
+    PRESS_MARGIN,
+    ClipHeight,
+    PivotPress,
+    height_at_clip,
+    push_tension,
+)
 
 
 def test_height_where_the_force_line_passes_the_clip() -> None:
@@ -27,3 +37,62 @@ def test_push_tension_bounds() -> None:
     assert push_tension(2.0, 1.0, 15.0) == 6.0
     assert push_tension(5.0, 1.0, 15.0) == 9.0  # 60 % of the limit
     assert push_tension(1.0, 4.0, 15.0) == 4.0
+
+
+def _pivot(stiffness: float, sin_far: float = 0.2, radius: float = 0.15) -> PivotPress:
+    return PivotPress(
+        radius=radius,
+        tension=2.0,
+        stiffness=stiffness,
+        drop=0.09,
+        sin_far=sin_far,
+        sin_max=math.sin(math.radians(60.0)),
+    )
+
+
+def test_pivot_press_from_the_bend_that_the_table_allows() -> None:
+    plan = _pivot(50.0)
+    # at 4 N the span is 4 cm longer: the gripper 0.19 m from the exit, 9 cm below it
+    assert plan.press(4.0) == pytest.approx(4.0 * (0.09 / 0.19 - 0.2))
+    assert plan.press(2.0) == pytest.approx(2.0 * (0.09 / 0.15 - 0.2))
+    # never steeper than sin_max: a gripper close to the clip
+    close = PivotPress(0.05, 2.0, 1e4, 0.09, 0.0, 0.5)
+    assert close.press(2.0) == pytest.approx(1.0)
+
+
+def test_stiff_cable_keeps_three_times_the_push_force() -> None:
+    plan = _pivot(1000.0, sin_far=0.1)
+    assert plan.press(6.0) >= PRESS_MARGIN * 2.0
+    assert plan.tension_for(2.0, 6.0, 9.0) == 6.0
+
+
+def test_soft_cable_gets_the_tension_nearest_three_times_that_presses_enough() -> None:
+    plan = _pivot(20.0, sin_far=0.1, radius=0.1)
+    # 3 P = 3.6 N stretches the span by 8 cm: the bend flattens
+    assert plan.press(3.6) < PRESS_MARGIN * 1.2
+    f = plan.tension_for(1.2, 3.6, 9.0)
+    assert plan.press(f) >= PRESS_MARGIN * 1.2 and 2.0 <= f < 3.6
+
+
+def test_out_of_reach_clip_gets_the_hardest_press() -> None:
+    plan = _pivot(10.0, sin_far=0.4)
+    f = plan.tension_for(4.0, 9.0, 9.0)
+    grid = np.linspace(2.0, 9.0, 200)
+    assert plan.press(f) == pytest.approx(max(plan.press(float(g)) for g in grid), rel=0.02)
+
+
+@given(
+    st.floats(5.0, 2000.0),
+    st.floats(-0.3, 0.5),
+    st.floats(0.5, 4.0),
+    st.floats(0.5, 9.0),
+)
+def test_planned_tension_is_the_preferred_one_or_within_bounds(
+    stiffness: float, sin_far: float, push: float, preferred: float
+) -> None:
+    plan = _pivot(stiffness, sin_far)
+    f = plan.tension_for(push, preferred, 9.0)
+    assert f == preferred or 2.0 <= f <= 9.0
+    if f != preferred:  # the preferred one fell short, and f presses at least as hard
+        assert plan.press(preferred) < PRESS_MARGIN * push
+        assert plan.press(f) >= min(PRESS_MARGIN * push, plan.press(preferred)) - 1e-9

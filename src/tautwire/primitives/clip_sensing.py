@@ -12,6 +12,7 @@ the gripper again) the proof that the cable stayed in.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import NDArray
@@ -57,6 +58,68 @@ def push_tension(push_force: float, tension: float | None, force_limit: float) -
     """
     wanted = max(3.0 * push_force, tension or 0.0)
     return float(min(wanted, 0.6 * force_limit))
+
+
+#: Press [N] planned per newton of the clip's push force (friction, sag and
+#: the estimates' errors eat into the ideal press).
+PRESS_MARGIN = 1.3
+
+
+@dataclass(frozen=True)
+class PivotPress:
+    """The press one arm can make on a clip by pivoting the cable about it.
+
+    The cable runs taut from a fixed contact over the clip to the gripper.
+    Pivoting the gripper down about the clip's exit bends the cable there;
+    the vertical press on the clip is f (sin a_near - sin a_far), a_near the
+    cable's slope from the exit down to the gripper, a_far its slope from
+    the contact down to the clip (positive when the contact is higher, which
+    takes press away). Under force control the gripper's distance from the
+    exit is not free: the span stretches by 1 / k per newton, so
+
+        r(f) = r_0 + (f - f_0) / k,   sin a_near <= min(drop / r(f), sin a_max).
+
+    A soft cable pulled harder moves the gripper out and flattens the bend
+    that the height above the table allows; a stiff one does not.
+
+    Attributes:
+        radius: r_0 [m], the gripper's distance from the clip's exit now.
+        tension: f_0 [N], the tension now.
+        stiffness: k [N/m] of the span from the contact to the gripper.
+        drop: Largest height [m] the gripper may go below the exit.
+        sin_far: sin a_far (the contact's side).
+        sin_max: sin a_max, the steepest slope allowed on the gripper's side.
+    """
+
+    radius: float
+    tension: float
+    stiffness: float
+    drop: float
+    sin_far: float
+    sin_max: float
+
+    def press(self, tension: float) -> float:
+        """The largest vertical press [N] on the clip with the cable at ``tension`` [N]."""
+        r = max(self.radius + (tension - self.tension) / self.stiffness, 1e-3)
+        sin_near = min(max(self.drop, 0.0) / r, self.sin_max)
+        return float(tension * (sin_near - self.sin_far))
+
+    def tension_for(self, push_force: float, preferred: float, highest: float) -> float:
+        """The tension [N] to push a clip of ``push_force`` [N] in with.
+
+        ``preferred`` if that gives ``PRESS_MARGIN`` times the push force;
+        otherwise the tension closest to it that does, between the tension
+        now and ``highest``; if none does, the one that presses hardest.
+        """
+        wanted = PRESS_MARGIN * push_force
+        if self.press(preferred) >= wanted:
+            return preferred
+        grid = np.append(np.linspace(min(self.tension, highest), highest, 60), preferred)
+        press = np.array([self.press(float(f)) for f in grid])
+        enough = grid[press >= wanted]
+        if enough.size:
+            return float(enough[np.argmin(np.abs(enough - preferred))])
+        return float(grid[int(np.argmax(press))])
 
 
 class ClipHeight:

@@ -11,7 +11,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import turn_x_onto
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
-from tautwire.primitives.clip_sensing import ClipHeight, push_tension
+from tautwire.primitives.clip_sensing import ClipHeight, PivotPress, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
@@ -32,8 +32,9 @@ ATTEMPTS = 3
 MAX_ANGLE = math.radians(60.0)
 #: Height [m] above the seat of the pivot: about the jaws' top.
 JAW_TOP = 0.008
-#: Lowest height [m] above the table the gripper may go (lower, its cable lies on the table).
-TABLE_CLEARANCE = 0.03
+#: Lowest height [m] above the table the gripper's tool centre point may go
+#: (its finger pads reach 8 mm below it).
+TABLE_CLEARANCE = 0.02
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
 
@@ -47,7 +48,10 @@ class SingleArmClipping(Primitive):
     cable's straight line passes ``ABOVE`` over the clip's seat q, along the
     slot; then it pivots down about the clip's exit at ``PUSH_RATE``, with
     the tension raised to three times the clip's push force
-    (:func:`push_tension`). The snap is felt (:class:`ClipHeight`): the
+    (:func:`push_tension`); where a soft cable's stretch would then leave
+    too shallow a bend above the table to press ``PRESS_MARGIN`` times the
+    push force, to the nearest tension that does (:class:`PivotPress`, from
+    the contact, the clip's design and k). The snap is felt (:class:`ClipHeight`): the
     force's line drops from the jaws to the seat. The gripper presses on by
     ``PRESS_EXTRA``, then lifts back to the straight line from c through
     the seat (a clipped cable lies there unloaded; an unclipped one rests on
@@ -78,6 +82,7 @@ class SingleArmClipping(Primitive):
         self.clip = clip
         self.phase = "align"
         self.angle = 0.0  # how far [rad] the gripper has pivoted below the clip
+        self.press = 0.0  # the press [N] on the clip planned for the push tension
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Check the clip against the model; plan the pivot plane."""
@@ -125,6 +130,29 @@ class SingleArmClipping(Primitive):
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
         self._base_force = ctx.tension if ctx.tension is not None else 2.0
         self._since = obs.time
+
+    def _plan_force(self, p_gripper: np.ndarray, tension: float, ctx: PrimitiveContext) -> float:
+        """The push tension [N]: three times the push force, unless the bend cannot press enough.
+
+        Near the table a soft cable's stretch leaves too little room for the
+        bend (:class:`PivotPress`): then the tension closest to that which
+        presses ``PRESS_MARGIN`` times the push force, from the model (the
+        contact, the clip of the board design, k).
+        """
+        entry = self._exit - 2.0 * (self._exit - self.info.position)
+        entry[2] = self._exit[2]
+        far = self._contact - entry
+        plan = PivotPress(
+            radius=norm3(p_gripper - self._exit),
+            tension=max(tension, 0.1),
+            stiffness=ctx.estimator.elasticity.k_trusted,
+            drop=float(self._exit[2]) - self.floor,
+            sin_far=float(far[2]) / max(norm3(far), 1e-9),
+            sin_max=math.sin(MAX_ANGLE),
+        )
+        force = plan.tension_for(self.info.push_force, self.force, 0.6 * ctx.limits.max_force)
+        self.press = plan.press(force)
+        return force
 
     def _target(self, obs: Observation, state: TensionState) -> np.ndarray:
         """The gripper's set point while aligning: on the line from c over the clip."""
@@ -179,6 +207,7 @@ class SingleArmClipping(Primitive):
                 rise = float(self._contact[2] - self.info.position[2])
                 run = float(np.hypot(*(self.info.position - self._contact)[:2]))
                 self._angle_rest = max(math.atan2(rise, run), self._angle0)
+                self.force = self._plan_force(me.position, state.tension, ctx)
         elif self.phase in ("push", "press"):
             force = self.force
             self.angle += PUSH_RATE * ctx.control_period
@@ -195,8 +224,9 @@ class SingleArmClipping(Primitive):
                 self.outcome = Outcome.failure(
                     "not_clipped",
                     f"no snap felt into {self.clip} down to {where}"
-                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat): hold the cable"
-                    " closer to the clip or tension it more",
+                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat; the bend"
+                    f" presses about {self.press:.1f} N of the {self.info.push_force:.1f} N it"
+                    " needs): hold the cable closer to the clip",
                 )
         else:  # lift back over the clip and feel whether the cable stayed in
             rest = self._angle_rest
