@@ -21,14 +21,20 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
 from tautwire.model.quaternion import multiply
+from tautwire.primitives.clip_sensing import PivotPress
+from tautwire.primitives.single_arm_clipping import JAW_TOP, MAX_ANGLE, TABLE_CLEARANCE
 from tautwire.scenario import Scenario
 from tautwire.scenario.loader import scenario_from_data
+from tautwire.scenario.models import CLIP_LENGTH
 from tautwire.scenario.primitive_catalogue import find_primitive
 from tautwire.scenario.workspace import WORKSPACE
+
+FloatArray = NDArray[np.float64]
 
 STIFFNESS_RANGE = (10.0, 1000.0)  # N/m, log-uniform
 LENGTH_RANGE = (0.4, 1.0)  # m, uniform
@@ -36,8 +42,8 @@ MASS_PER_LENGTH = 0.03  # kg/m
 RADIUS = 0.0025  # m
 FORCE_NOISE = 0.05  # N
 FORCE_LIMIT = 15.0  # N
-#: F: a clip needs at most the tension this much more stretch [m] of the held span gives.
-FEASIBLE_STRETCH = 0.05
+#: F: a clip needs at most the hardest press one arm can make on it, over this.
+PRESS_RESERVE = 1.2
 #: Margin [m] kept from the workspace's faces.
 MARGIN = 0.05
 
@@ -463,6 +469,32 @@ def scene_h(seed: int) -> TrialScene:
     return TrialScene("H", scenario, draw.inputs)
 
 
+def _pivot_press(
+    anchor: FloatArray, seat: FloatArray, u: FloatArray, at: float, span_stiffness: float
+) -> float:
+    """The hardest press [N] primitive F can make on a clip, from the true geometry.
+
+    The cable runs from the anchor over the clip's jaws to the gripper,
+    ``at`` [m] of it stretched by f / ``span_stiffness``; :class:`PivotPress`
+    over the tensions up to 60 % of the force limit, with F's own limits
+    (the table clearance, the steepest bend).
+    """
+    half = 0.5 * CLIP_LENGTH * u + np.array([0.0, 0.0, JAW_TOP])
+    exit_point, entry = seat + half, seat - half
+    entry[2] = exit_point[2]
+    far = anchor - entry
+    tension = 2.0
+    plan = PivotPress(
+        radius=at + tension / span_stiffness - float(np.linalg.norm(far)) - CLIP_LENGTH,
+        tension=tension,
+        stiffness=span_stiffness,
+        drop=float(exit_point[2]) - TABLE_CLEARANCE,
+        sin_far=float(far[2]) / float(np.linalg.norm(far)),
+        sin_max=math.sin(MAX_ANGLE),
+    )
+    return max(plan.press(float(f)) for f in np.linspace(1.0, 0.6 * FORCE_LIMIT, 50))
+
+
 def scene_f(seed: int) -> TrialScene:
     """F: tension (D), then press the cable into a clip between the anchor and the gripper."""
     draw = _Draw(seed)
@@ -485,7 +517,14 @@ def scene_f(seed: int) -> TrialScene:
         gripper = anchor + float(draw.rng.uniform(0.95, 0.98)) * at * u
         # below the slack cable's sag, so that it does not start on the clip
         seat = anchor + to_clip * u - np.array([0.0, 0.0, 0.05])
-        if _inside(gripper) and _inside(seat, 0.02) and at > to_clip + 0.05:
+        if not (_inside(gripper) and _inside(seat, 0.02) and at > to_clip + 0.05):
+            continue
+        # one arm presses with the held span's tension only, bending the cable
+        # over the clip as far as the table lets it: the clip needs at most
+        # the hardest press over PRESS_RESERVE, 1-4 N (redrawn if under 1 N)
+        span_stiffness = float(cable["stiffness"]) * length / at
+        top = min(_pivot_press(anchor, seat, u, at, span_stiffness) / PRESS_RESERVE, 4.0)
+        if top >= 1.0:
             break
     else:
         raise InvalidArgumentError("could not place an anchor, a clip and a hold")
@@ -493,10 +532,6 @@ def scene_f(seed: int) -> TrialScene:
     draw.point("gripper", gripper)
     draw.point("clip", seat)
     draw.inputs["hold_at"] = round(at, 6)
-    # one arm presses with the held span's tension only: a clip needs at
-    # most what FEASIBLE_STRETCH more stretch of that span gives (1-4 N)
-    span_stiffness = float(cable["stiffness"]) * length / at
-    top = min(max(FEASIBLE_STRETCH * span_stiffness, 1.0), 4.0)
     push = 1.0 + share * (top - 1.0)
     draw.inputs["push_force"] = round(push, 6)
     slot = yaw + draw.uniform("slot_offset", -math.radians(10.0), math.radians(10.0))
