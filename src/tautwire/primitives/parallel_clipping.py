@@ -38,9 +38,12 @@ class ParallelClipping(Primitive):
     tension, raised to three times the clip's push force while pushing:
     :func:`push_tension`). The absolute pose then descends: the cable bends
     over the clip at 2 f sin(alpha), until the snap is felt from the sensing
-    gripper's force line (:class:`ClipHeight`). The grippers rise again; if
-    the force line still bends down to the seat, the cable is in, and the
-    model gets a fixed point at the clip.
+    gripper's force line (:class:`ClipHeight`). The grippers rise again to
+    the seat's height, where a clipped cable lies straight in the seat,
+    unloaded (higher, the tension would pull up on a weak clip: 2 f sin of
+    the slope), and an unclipped one still rests on the jaws; if the force
+    line reaches the seat, the cable is in, and the model gets a fixed point
+    at the clip.
 
     Failure: ``not_clipped`` if no snap is felt down to the steepest bend or
     the table, or the cable came out when lifted (the paper's one clipping
@@ -125,10 +128,10 @@ class ParallelClipping(Primitive):
                     f" (cable {1e3 * (height or 0.0):.1f} mm above its seat): hold the cable"
                     " with the grippers closer together or tension it more",
                 )
-        else:  # lift back over the clip and feel whether the cable stayed in
-            self.drop = max(self.drop - 2.0 * PUSH_SPEED * ctx.control_period, 0.0)
+        else:  # lift to the seat's height and feel whether the cable stayed in
+            self.drop = max(self.drop - 2.0 * PUSH_SPEED * ctx.control_period, ABOVE)
             reached = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
-            if self.drop <= 0.0 and reached and obs.time - self._since > 0.3:
+            if self.drop <= ABOVE and reached and obs.time - self._since > 0.3:
                 self._verify(ctx, sensor.position)
         if self._slack.update(obs.time, state.tension, force):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
