@@ -51,19 +51,20 @@ class SingleArmClipping(Primitive):
     (:func:`push_tension`); where a soft cable's stretch would then leave
     too shallow a bend above the table to press ``PRESS_MARGIN`` times the
     push force, to the nearest tension that does (:class:`PivotPress`, from
-    the contact, the clip's design and k). The snap is felt (:class:`ClipHeight`): the
-    force's line drops from the jaws to the seat. The gripper presses on by
-    ``PRESS_EXTRA``, then lifts back to the straight line from c through
-    the seat (a clipped cable lies there unloaded; an unclipped one rests on
-    the jaws); if the force's line still reaches the seat, the cable is in
-    and the model gets a fixed point at q. If not, it pushes again, deeper,
-    up to ``ATTEMPTS`` times.
+    the contact, the clip's design and k). The snap is felt
+    (:class:`ClipHeight`): the force's line drops from the jaws to the
+    seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back to the
+    straight line from c through the seat (a clipped cable lies there
+    unloaded; an unclipped one rests on the jaws); if the force's line
+    still reaches the seat, the cable is in and the model gets a fixed
+    point at q. If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
-    table (``TABLE_CLEARANCE``), or the cable did not stay in after the last
-    attempt; ``precondition`` if the clip is not between
-    the contact and the gripper or its slot is across the cable;
-    ``slipped`` if the cable goes slack; ``timeout``.
+    table (``TABLE_CLEARANCE``; the message gives the planned press against
+    the clip's push force), or the cable did not stay in after the last
+    attempt; ``precondition`` if the clip is not between the contact and
+    the gripper or its slot is across the cable; ``slipped`` if the cable
+    goes slack; ``timeout``.
 
     Args:
         arm: The gripper that holds the cable (it carries the sensor).
