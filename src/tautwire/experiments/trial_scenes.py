@@ -483,7 +483,7 @@ def _pivot_press(
     exit_point, entry = seat + half, seat - half
     entry[2] = exit_point[2]
     far = anchor - entry
-    tension = 2.0
+    tension = 2.0  # the reference of r(f), which is linear in f: any value gives the same press
     plan = PivotPress(
         radius=at + tension / span_stiffness - float(np.linalg.norm(far)) - CLIP_LENGTH,
         tension=tension,
