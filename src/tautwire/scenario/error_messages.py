@@ -45,7 +45,7 @@ def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location
         keys = ", ".join(parent.model_fields) if parent is not None else "the documented keys"
         return location, f"unknown key (expected one of: {keys})"
     if kind in ("union_tag_invalid", "union_tag_not_found"):
-        tags = ctx.get("expected_tags", "anchor, peg, clip")
+        tags = ctx.get("expected_tags") or _type_tags(root, location)
         tag = ctx.get("tag")
         what = "missing" if tag is None else f"got {show(tag)}"
         return (*location, "type"), f"{what} (expected one of: {tags})"
@@ -106,6 +106,18 @@ def _expected(field: FieldInfo | None) -> str:
     if annotation is str:
         return "a name"
     return "a value"
+
+
+def _type_tags(root: type[BaseModel], location: Location) -> str:
+    """The ``type`` values that the union at ``location`` accepts, e.g. ``'anchor', 'peg'``."""
+    found = _walk(root, location)
+    members = get_args(_strip(found[0])) if found is not None else ()
+    tags = [
+        repr(tag)
+        for member in members
+        for tag in get_args(getattr(member, "model_fields", {}).get("type", FieldInfo()).annotation)
+    ]
+    return ", ".join(tags) or "a type"
 
 
 def _strip(annotation: Any) -> Any:

@@ -299,6 +299,116 @@ class TaskStep(_Model):
         return find_primitive(self.primitive)
 
 
+# ------------------------------------------------------------------ faults
+# Faults are injected by the simulator only (SCENARIO.md, "Faults"); the
+# robot never reads them: handling them is the core's job.
+
+
+class SpikeFault(_Model):
+    """One sample of the measured force carries an added force.
+
+    Attributes:
+        type: ``"spike"``.
+        at: simulated time from the start of the run [s]; the first sample at
+            or after it is hit.
+        force: force added to that sample [N], world frame.
+    """
+
+    type: Literal["spike"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+    force: Vector3 = Field(description="force added to one sample [N]")
+
+
+class NanFault(_Model):
+    """One sample of NaN force and torque.
+
+    Attributes:
+        type: ``"nan"``.
+        at: simulated time from the start of the run [s].
+    """
+
+    type: Literal["nan"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+
+
+class FreezeFault(_Model):
+    """The sensor repeats its last sample while time goes on.
+
+    Attributes:
+        type: ``"freeze"``.
+        at: simulated time from the start of the run [s].
+        duration: how long the sensor repeats itself [s].
+    """
+
+    type: Literal["freeze"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+    duration: float = Field(gt=0.0, description="freeze duration [s]")
+
+
+class BiasDriftFault(_Model):
+    """The sensor's bias ramps linearly from 0 to ``force``, then stays.
+
+    Attributes:
+        type: ``"bias_drift"``.
+        at: simulated time from the start of the run [s].
+        duration: time of the ramp [s]; 0 is a step (a constant offset).
+        force: the bias at the end of the ramp [N], world frame.
+    """
+
+    type: Literal["bias_drift"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+    duration: float = Field(ge=0.0, description="ramp duration [s]")
+    force: Vector3 = Field(description="final bias [N]")
+
+
+class SlipFault(_Model):
+    """A gripper's grip drops to near zero, so the cable can slide.
+
+    Attributes:
+        type: ``"slip"``.
+        at: simulated time from the start of the run [s].
+        duration: how long the grip stays lost [s].
+        arm: the gripper that loses its grip (``None``: the sensing arm).
+    """
+
+    type: Literal["slip"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+    duration: float = Field(gt=0.0, description="slip duration [s]")
+    arm: Literal["left", "right"] | None = None
+
+
+class RobotErrorFault(_Model):
+    """The robot's ``act()`` fails (a lost packet), once or repeatedly.
+
+    Attributes:
+        type: ``"robot_error"``.
+        at: simulated time from the start of the run [s].
+        count: number of consecutive failing ``act()`` calls (default 1).
+        duration: alternatively, every ``act()`` within this time fails [s].
+    """
+
+    type: Literal["robot_error"]
+    at: float = Field(ge=0.0, description="time from the start of the run [s]")
+    count: int | None = Field(None, ge=1, description="consecutive failed commands")
+    duration: float | None = Field(None, gt=0.0, description="time of repeated failures [s]")
+
+    @model_validator(mode="after")
+    def _count_or_duration(self) -> RobotErrorFault:
+        if self.count is not None and self.duration is not None:
+            raise located_error(
+                "give count or duration, not both (expected one way to repeat the error)",
+                ("duration",),
+            )
+        return self
+
+
+Fault = Annotated[
+    SpikeFault | NanFault | FreezeFault | BiasDriftFault | SlipFault | RobotErrorFault,
+    Field(discriminator="type"),
+]
+"""Any injected fault, told apart by its ``type`` key."""
+
+
 class Scenario(_Model):
     """A whole scenario file: robot, board, cables and task.
 
@@ -310,6 +420,7 @@ class Scenario(_Model):
         board: the fixtures.
         cables: the cables.
         task: primitives run in order.
+        faults: faults the simulator injects (simulation only).
     """
 
     version: Literal[1]
@@ -319,6 +430,7 @@ class Scenario(_Model):
     board: Board
     cables: list[CableSpec]
     task: list[TaskStep]
+    faults: list[Fault] = []
 
     @model_validator(mode="after")
     def _consistent(self) -> Scenario:
