@@ -61,6 +61,7 @@ from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     contact_point_least_squares,
 )
+from tautwire.estimation.force_line import line_offset, line_offset_variance
 from tautwire.estimation.weight_compensation import compensate_weight
 from tautwire.model.tension import G as GRAVITY_ABS
 
@@ -104,6 +105,8 @@ class ContactPointFilter:
         force_noise: sigma_f [N], force sensor noise, std per axis.
         process_noise: q [m^2 per step], per axis (a scalar or 3 values).
         position_noise: sigma_p [m], gripper position noise, std per axis.
+        torque_noise: sigma_tau [N m], torque sensor noise, std per axis: the
+            noise of a line offset when :meth:`update` is given the torque.
         mass_per_length: rho [kg/m] for weight compensation (0 = off).
         edge_length: Known gripper-contact cable length [m] for R and the
             weight compensation; None uses the distance to the estimate.
@@ -128,6 +131,7 @@ class ContactPointFilter:
         process_noise: float | ArrayLike = DEFAULT_PROCESS_NOISE,
         position_noise: float = 0.0,
         mass_per_length: float = 0.0,
+        torque_noise: float = 0.0,
         edge_length: float | None = None,
         min_distance: float = MIN_DISTANCE,
         min_tension: float = 0.1,
@@ -163,6 +167,9 @@ class ContactPointFilter:
         self.force_noise = float(force_noise)
         self.Q: FloatArray = np.diag(q)  # (3, 3)
         self.position_noise = float(position_noise)
+        if torque_noise < 0.0 or not math.isfinite(torque_noise):
+            raise InvalidArgumentError(f"torque_noise must be >= 0 N m, got {torque_noise}")
+        self.torque_noise = float(torque_noise)
         self.mass_per_length = float(mass_per_length)
         self.edge_length = edge_length
         self.min_distance = float(min_distance)
@@ -182,8 +189,11 @@ class ContactPointFilter:
         self._p_rr = 0.0  # var(radius) [m^2]
         self.changes: list[int] = []
         self._count = 0
-        self._buffer: deque[tuple[FloatArray, FloatArray]] = deque(maxlen=init_max_samples)
-        self._recent: deque[tuple[int, FloatArray, FloatArray]] = deque(maxlen=self.detector.window)
+        # (line point, raw force, line offset variance) of each sample
+        self._buffer: deque[tuple[FloatArray, FloatArray, float]] = deque(maxlen=init_max_samples)
+        self._recent: deque[tuple[int, FloatArray, FloatArray, float]] = deque(
+            maxlen=self.detector.window
+        )
         if x0 is not None and P0 is not None:
             self.x = np.asarray(x0, dtype=float).reshape(3).copy()
             self.P = np.asarray(P0, dtype=float).reshape(3, 3).copy()
@@ -233,6 +243,7 @@ class ContactPointFilter:
         f_sens: FloatArray,
         prior_mean: FloatArray | None = None,
         prior_covariance: FloatArray | None = None,
+        offset_variances: FloatArray | None = None,
     ) -> ContactPointLeastSquares:
         """Batch least squares with this filter's noise and weight model.
 
@@ -240,10 +251,13 @@ class ContactPointFilter:
         uncompensated solve (or ``edge_length``) and two refinements.
 
         Args:
-            p_grippers: Gripper positions [m].  # (N, 3)
+            p_grippers: Gripper positions [m], or the points of the wrench's
+                lines of action nearest them.  # (N, 3)
             f_sens: Raw forces [N] on the gripper.  # (N, 3)
             prior_mean: Optional prior mean [m].  # (3,)
             prior_covariance: Its covariance [m^2].  # (3, 3)
+            offset_variances: Variance [m^2] of each line point's offset
+                (see :mod:`~tautwire.estimation.force_line`).  # (N,)
 
         Returns:
             The least-squares result.
@@ -254,6 +268,7 @@ class ContactPointFilter:
             prior_covariance=prior_covariance,
             position_noise=self.position_noise,
             min_distance=self.min_distance,
+            offset_variances=offset_variances,
         )
         res = contact_point_least_squares(
             p_grippers,
@@ -284,14 +299,17 @@ class ContactPointFilter:
     def _try_initialise(self) -> bool:
         if len(self._buffer) < 3:
             return False
-        u = np.array([f / np.linalg.norm(f) for _, f in self._buffer])  # (N, 3)
+        u = np.array([f / np.linalg.norm(f) for _, f, _ in self._buffer])  # (N, 3)
         lam = float(np.linalg.eigvalsh(np.eye(3) - (u.T @ u) / u.shape[0])[0])
         spread = 2.0 * math.asin(math.sqrt(min(max(lam, 0.0), 1.0)))
         if spread < self.init_spread:
             return False
         p = np.array([s[0] for s in self._buffer])
         f = np.array([s[1] for s in self._buffer])
-        res = self.batch(p, f)
+        try:
+            res = self.batch(p, f, offset_variances=np.array([s[2] for s in self._buffer]))
+        except InvalidArgumentError:
+            return False  # lines through one point (the gripper did not move): wait
         # variance of unit weight: unmodelled effects (dynamics, sag, a round
         # peg) show as chi2 above its degrees of freedom and widen P
         # (only when chi2 exceeds dof by more than three of its std)
@@ -310,9 +328,12 @@ class ContactPointFilter:
         return True
 
     def _restart(self, first_gated: int, p: FloatArray, f_chord: FloatArray) -> None:
-        samples = [(pp, ff) for (i, pp, ff) in self._recent if i >= first_gated]
+        samples = [(pp, ff, vv) for (i, pp, ff, vv) in self._recent if i >= first_gated]
         self.restart(
-            np.array([s[0] for s in samples]), np.array([s[1] for s in samples]), f_chord=f_chord
+            np.array([s[0] for s in samples]),
+            np.array([s[1] for s in samples]),
+            f_chord=f_chord,
+            offset_variances=np.array([s[2] for s in samples]),
         )
 
     def restart(
@@ -323,6 +344,7 @@ class ContactPointFilter:
         prior_covariance: ArrayLike | None = None,
         f_chord: ArrayLike | None = None,
         radius: tuple[float, float] | None = None,
+        offset_variances: ArrayLike | None = None,
     ) -> None:
         """Start afresh at a new contact from the samples that saw it.
 
@@ -341,6 +363,7 @@ class ContactPointFilter:
             radius: (R, std) [m] of a round contact (see :meth:`make_round`),
                 whose samples ``p_grippers`` are already shifted by R onto
                 its axis; None for a point contact.
+            offset_variances: Variance [m^2] of each sample's line offset.  # (N,)
         """
         ps = np.asarray(p_grippers, dtype=float).reshape(-1, 3)
         fs = np.asarray(f_sens, dtype=float).reshape(-1, 3)
@@ -357,6 +380,7 @@ class ContactPointFilter:
             fs,
             np.asarray(prior_mean, dtype=float).reshape(3),
             np.asarray(prior_covariance, dtype=float).reshape(3, 3),
+            None if offset_variances is None else np.asarray(offset_variances, dtype=float),
         )
         self.x = res.estimate.copy()
         self.P = res.covariance.copy()
@@ -403,9 +427,16 @@ class ContactPointFilter:
 
     # ------------------------------------------------------------------ update
     def update(
-        self, p_gripper: ArrayLike, f_sens: ArrayLike, side: ArrayLike | None = None
+        self,
+        p_gripper: ArrayLike,
+        f_sens: ArrayLike,
+        side: ArrayLike | None = None,
+        torque: ArrayLike | None = None,
     ) -> ContactPointUpdate:
         """Fuse one sample (equ:kalmanUpdate).
+
+        A sample with a non-finite position, force or torque is not used
+        (time passes, nothing is measured).
 
         Args:
             p_gripper: Gripper position p_g [m], world frame.  # (3,)
@@ -415,6 +446,10 @@ class ContactPointFilter:
             side: For a round contact (:meth:`make_round`), the unit vector
                 normal to the line towards the contact's axis; ignored for a
                 point contact.  # (3,)
+            torque: Torque [N m] about p_g, world frame, measured with
+                ``f_sens``: the line then runs through the whole wrench's
+                line of action (:mod:`~tautwire.estimation.force_line`)
+                instead of through p_g. None: through p_g.  # (3,)
 
         Returns:
             The estimate (or None), its covariance and std, the change flag,
@@ -424,6 +459,25 @@ class ContactPointFilter:
         self._count += 1
         p = np.array(p_gripper, dtype=float).reshape(3)
         f_raw = np.array(f_sens, dtype=float).reshape(3)
+        v_offset = 0.0  # variance [m^2] of the line's offset from p_g
+        finite = bool(np.all(np.isfinite(p)) and np.all(np.isfinite(f_raw)))
+        if torque is not None and finite:
+            tau = np.asarray(torque, dtype=float).reshape(3)
+            if np.all(np.isfinite(tau)):
+                offset = line_offset(f_raw, tau)
+                p = p + offset
+                v_offset = line_offset_variance(
+                    float(np.linalg.norm(f_raw)),
+                    float(np.linalg.norm(offset)),
+                    self.force_noise,
+                    self.torque_noise,
+                )
+            else:
+                finite = False
+        if not finite:
+            if self.running:
+                self.P += self.Q  # P = F P F' + Q (time passes, nothing measured)
+            return self._result(False, None, False)
         fx, fy, fz = f_raw.tolist()
         if self.mass_per_length > 0.0 and self.running:
             # f = f_sens - m_g g with m_g = rho d / 2 (eq:mass, equ:edge_tension)
@@ -431,7 +485,7 @@ class ContactPointFilter:
         fn = math.sqrt(fx * fx + fy * fy + fz * fz)
         if not self.running:
             if fn >= self.min_tension and math.isfinite(fn):
-                self._buffer.append((p, f_raw))
+                self._buffer.append((p, f_raw, v_offset))
                 self._try_initialise()
             return self._result(False, None, False)
         if fn < self.min_tension or not math.isfinite(fn):
@@ -448,10 +502,11 @@ class ContactPointFilter:
         )
         d = max(self._span(p), self.min_distance)
         r = d * self.force_noise / fn
-        r2 = r * r + self.position_noise * self.position_noise  # R = r^2 I
+        r2 = r * r + self.position_noise * self.position_noise + v_offset  # R = r^2 I
 
         if side is not None and self.radius is not None:
-            return self._update_round(index, p, f_raw, np.array([fx, fy, fz]), H, r2, side)
+            f_chord = np.array([fx, fy, fz])
+            return self._update_round(index, p, f_raw, f_chord, H, r2, side, v_offset)
         P = self.P + self.Q  # P = F P F' + Q  (F = I: x = F x is x)
         y = H @ (p - self.x)  # y = z - H x,  z = H p_g
         PHt = P @ H.T  # (3, 2)
@@ -467,7 +522,7 @@ class ContactPointFilter:
             test = self.detector.test(index, nis, math.hypot(y0, y1))
             if test.gated:
                 self.P = P
-                self._recent.append((index, p, f_raw))
+                self._recent.append((index, p, f_raw, v_offset))
                 if test.changed and test.first_gated is not None:
                     f_chord = np.array([fx, fy, fz])
                     self._restart(test.first_gated, p, f_chord)
@@ -492,6 +547,7 @@ class ContactPointFilter:
         H: FloatArray,
         r2: float,
         side: ArrayLike,
+        v_offset: float = 0.0,
     ) -> ContactPointUpdate:
         """The update with the state (p_c, R) of a round contact (see :meth:`make_round`)."""
         assert self.radius is not None
@@ -511,7 +567,7 @@ class ContactPointFilter:
             test = self.detector.test(index, nis, float(np.linalg.norm(y)))
             if test.gated:
                 self._store(P4)
-                self._recent.append((index, p, f_raw))
+                self._recent.append((index, p, f_raw, v_offset))
                 if test.changed and test.first_gated is not None:
                     self._restart(test.first_gated, p, f_chord)
                     self.changes.append(index)

@@ -29,11 +29,14 @@ from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation.contact_observation import MIN_DISTANCE
+from tautwire.estimation.force_line import line_offset, line_offset_variance
 
 FloatArray = NDArray[np.float64]
 
 #: Eigenvalues of A below this fraction of the largest count as zero (rank).
 RANK_TOLERANCE = 1e-9
+#: Default smallest RMS spread [m] of the gripper positions of a batch without a prior.
+MIN_BASELINE = 1e-3
 
 
 class NormalEquations(NamedTuple):
@@ -64,6 +67,10 @@ class ContactPointLeastSquares(NamedTuple):
             / r_j^2 (about 2 N - 3 when the noise model is right).
         residual_rms: Root mean square distance [m] of p_c from the lines.
         distances: d_j [m] used in the weights (before the floor).  # (N,)
+        ahead: Median distance [m] of p_c in front of the grippers along the
+            forces, median_j f_hat_j . (p_c - p_j): a contact the cable pulls
+            towards lies well ahead (> 0); lines that meet at or behind the
+            gripper do not describe a contact.
     """
 
     estimate: FloatArray
@@ -74,6 +81,7 @@ class ContactPointLeastSquares(NamedTuple):
     chi2: float
     residual_rms: float
     distances: FloatArray
+    ahead: float = math.inf
 
 
 def _as_samples(p_grippers: ArrayLike, forces: ArrayLike) -> tuple[FloatArray, FloatArray]:
@@ -185,8 +193,17 @@ def contact_point_least_squares(
     position_noise: float = 0.0,
     min_distance: float = MIN_DISTANCE,
     iterations: int = 2,
+    torques: ArrayLike | None = None,
+    torque_noise: float = 0.0,
+    offset_variances: ArrayLike | None = None,
+    min_baseline: float = MIN_BASELINE,
 ) -> ContactPointLeastSquares:
     """Estimate the contact point from a batch of samples (equ:ls_observation_model).
+
+    With ``torques``, each line passes through the point of the whole
+    wrench's line of action nearest the gripper
+    (:mod:`~tautwire.estimation.force_line`), not through the gripper: where
+    the cable leaves the fingers no longer biases the estimate.
 
     Args:
         p_grippers: Gripper positions p_g_j [m], world frame.  # (N, 3)
@@ -202,15 +219,49 @@ def contact_point_least_squares(
         position_noise: sigma_p [m], gripper position noise per axis.
         min_distance: Floor [m] of d_j.
         iterations: Number of solves when ``distances`` is None (>= 1).
+        torques: Torques tau_j [N m] about the gripper, world frame, measured
+            with ``forces`` (raw: the line of action is the raw force's);
+            None assumes lines through the gripper.  # (N, 3)
+        torque_noise: sigma_tau [N m], std per axis of the torque sensor.
+        offset_variances: Further variance [m^2] of each line's position per
+            normal axis (e.g. of line offsets computed by the caller).  # (N,)
+        min_baseline: Without a prior, the gripper positions (or line points)
+            must spread at least this far [m] (RMS about their mean): lines
+            through one point meet at that point whatever the contact is.
 
     Returns:
         The estimate with its covariance, rank, conditioning and residuals.
 
     Raises:
-        InvalidArgumentError: Bad shapes or values, or parallel forces
-            (rank 2) without a prior.
+        InvalidArgumentError: Bad shapes or values, parallel forces (rank 2)
+            or a gripper that did not move (baseline below ``min_baseline``)
+            without a prior.
     """
     p, f = _as_samples(p_grippers, forces)
+    n = p.shape[0]
+    extra = np.zeros(n)
+    if offset_variances is not None:
+        extra = np.broadcast_to(np.asarray(offset_variances, dtype=float), (n,)).copy()
+        if np.any(~np.isfinite(extra)) or np.any(extra < 0.0):
+            raise InvalidArgumentError("offset_variances must be finite and >= 0 m^2")
+    if torques is not None:
+        tau = np.asarray(torques, dtype=float)
+        if tau.shape != p.shape or not np.all(np.isfinite(tau)):
+            raise InvalidArgumentError(
+                f"torques must be finite with shape {p.shape}, got shape {tau.shape}"
+            )
+        if torque_noise < 0.0 or not math.isfinite(torque_noise):
+            raise InvalidArgumentError(f"torque_noise must be >= 0 N m, got {torque_noise}")
+        offsets = np.array([line_offset(fj, tj) for fj, tj in zip(f, tau, strict=True)])
+        p = p + offsets
+        extra = extra + np.array(
+            [
+                line_offset_variance(
+                    float(np.linalg.norm(fj)), float(np.linalg.norm(oj)), force_noise, torque_noise
+                )
+                for fj, oj in zip(f, offsets, strict=True)
+            ]
+        )
     if not (force_noise > 0.0 and math.isfinite(force_noise)):
         raise InvalidArgumentError(f"force_noise must be > 0 N, got {force_noise}")
     if position_noise < 0.0 or not math.isfinite(position_noise):
@@ -229,7 +280,15 @@ def contact_point_least_squares(
         except np.linalg.LinAlgError as exc:
             raise InvalidArgumentError("prior_covariance must be invertible") from exc
     u, norms = _unit_directions(f)
-    n = p.shape[0]
+    if m0 is None:
+        baseline = float(np.sqrt(np.mean(np.sum((p - p.mean(axis=0)) ** 2, axis=1))))
+        if baseline < min_baseline:
+            raise InvalidArgumentError(
+                f"the gripper hardly moved ({baseline * 1e3:.2f} mm RMS, at least "
+                f"{min_baseline * 1e3:g} mm needed): lines through one point meet there whatever "
+                "the contact is; move the gripper across the cable, or pass prior_mean and "
+                "prior_covariance"
+            )
     if distances is None:
         d = np.ones(n)
         passes = iterations
@@ -239,7 +298,7 @@ def contact_point_least_squares(
             raise InvalidArgumentError("distances must be finite and >= 0 m")
         passes = 1
     for k in range(passes):
-        variances = line_variances(norms, d, force_noise, position_noise, min_distance)
+        variances = line_variances(norms, d, force_noise, position_noise, min_distance) + extra
         eq = contact_normal_equations(p, u, variances)
         estimate, covariance, rank, condition = _solve(eq, m0, info0)
         if distances is None and k + 1 < passes:
@@ -256,4 +315,5 @@ def contact_point_least_squares(
         chi2=float(np.sum(perp_sq / variances)),
         residual_rms=float(math.sqrt(np.mean(perp_sq))),
         distances=d,
+        ahead=float(np.median(np.einsum("ij,ij->i", u, -offsets))),
     )

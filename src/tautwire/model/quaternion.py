@@ -145,3 +145,25 @@ def turn_x_onto(q: ArrayLike, direction: ArrayLike) -> FloatArray:
         The turned orientation [w, x, y, z].  # (4,)
     """
     return multiply(shortest_arc(rotate(q, [1.0, 0.0, 0.0]), direction), q)
+
+
+def turn_x_onto_line(q: ArrayLike, direction: ArrayLike) -> FloatArray:
+    """``q`` turned by the shortest arc that lays its x-axis along the line of ``direction``.
+
+    A parallel gripper holds a cable between its fingers along its tool
+    x-axis, and it holds it as well with +x as with -x along the cable:
+    whichever of ``direction`` and ``-direction`` the x-axis is nearer is the
+    goal, so no half turn is ever commanded (one would wrap the cable round
+    a fingertip).
+
+    Args:
+        q: Current orientation [w, x, y, z].  # (4,)
+        direction: The line's direction (either sense, any length).  # (3,)
+
+    Returns:
+        The turned orientation [w, x, y, z].  # (4,)
+    """
+    d = np.asarray(direction, dtype=float).reshape(3)
+    if float(rotate(q, [1.0, 0.0, 0.0]) @ d) < 0.0:
+        d = -d
+    return turn_x_onto(q, d)

@@ -91,6 +91,7 @@ def make_context(
     *,
     force_limit: float = 15.0,
     force_noise: float = 0.05,
+    torque_noise: float = 0.002,
     control_period: float = 0.004,
     k_initial: float = 100.0,
     estimation_period: float = 0.0,
@@ -111,6 +112,7 @@ def make_context(
         arm: The gripper that holds the cable and carries the FT sensor.
         force_limit: The robot's force limit [N].
         force_noise: FT sensor noise [N], std per axis.
+        torque_noise: FT sensor torque noise [N m], std per axis.
         control_period: The robot's control period [s].
         k_initial: Initial stiffness guess [N/m] (it need not be right).
         estimation_period: Period [s] of the contact filter's iterations.
@@ -133,6 +135,7 @@ def make_context(
     filter_noise = force_noise / np.sqrt(samples)
     contact_filter = ContactPointFilter(
         force_noise=filter_noise,
+        torque_noise=torque_noise / np.sqrt(samples),
         process_noise=DEFAULT_PROCESS_NOISE if process_noise is None else process_noise,
         mass_per_length=graph.mass_per_length,
         min_tension=max(0.3, 5.0 * filter_noise),

@@ -8,14 +8,13 @@ import numpy as np
 
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import rotate, turn_x_onto
-from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 
@@ -26,11 +25,12 @@ class GripperAlignment(Primitive):
     stretched DLO orientation; any bending will degrade the linear
     approximation". While D's force control keeps the tension along the
     cable, the orientation set point is the current one turned by the
-    shortest arc from the tool x-axis onto the cable's direction (from the
-    contact towards the gripper, the negative of the low-passed
-    weight-compensated force's direction). The position holds.
+    shortest arc from the tool axis the cable leaves along, +x or -x
+    (:class:`~tautwire.primitives.tool_axis.ToolAxis`), onto the cable's
+    direction (the low-passed weight-compensated force's): never a half
+    turn. The position holds.
 
-    Success: the angle between the tool x-axis and the cable stays below
+    Success: the angle between that tool axis and the cable stays below
     ``tolerance`` for ``hold_time``. Failure: ``slipped`` if the cable goes
     slack; ``not_aligned`` at the timeout.
 
@@ -74,6 +74,7 @@ class GripperAlignment(Primitive):
         self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
         self._within_since: float | None = None
         self._slack = SlackWatch(1.0)
+        self._axis = ToolAxis()
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Keep the tension, turn towards the cable, judge."""
@@ -82,12 +83,9 @@ class GripperAlignment(Primitive):
         me = obs.gripper(self.arm)
         q_target = me.orientation
         if state.taut:
-            cable = -state.direction
-            smoothed = self._cable.update(obs.time, cable)
-            x_axis = rotate(me.orientation, [1.0, 0.0, 0.0])
-            c = float(x_axis @ smoothed) / norm3(smoothed)
-            self.angle = math.acos(min(max(c, -1.0), 1.0))
-            q_target = turn_x_onto(me.orientation, smoothed)
+            smoothed = self._cable.update(obs.time, state.direction)
+            self.angle = self._axis.angle(me.orientation, smoothed)
+            q_target = self._axis.target(me.orientation, smoothed)
         mine = Pose(self._hold[0 if self.arm == "left" else 1].position, q_target)
         desired = with_pose(self._hold, self.arm, mine)
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)

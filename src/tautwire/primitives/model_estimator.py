@@ -28,6 +28,7 @@ from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
+from tautwire.estimation.force_line import line_point
 from tautwire.estimation.round_contact import (
     DESIGN_TOLERANCE,
     RADIUS_STD,
@@ -135,6 +136,7 @@ class ModelEstimator:
         self.changes: list[int] = []  # iterations at which a new contact was declared
         self._sum_p = np.zeros(3)
         self._sum_f = np.zeros(3)
+        self._sum_tau = np.zeros(3)
         self._n = 0
         self._window_start: float | None = None
         # the last filter samples (mean gripper position, mean raw force)
@@ -229,6 +231,7 @@ class ModelEstimator:
             self._design = None if point.label == "estimated" else point.position.copy()
             self._sum_p[:] = 0.0
             self._sum_f[:] = 0.0
+            self._sum_tau[:] = 0.0
             self._n = 0
             self._window_start = None
         return True
@@ -237,7 +240,8 @@ class ModelEstimator:
     def update(self, obs: Observation) -> TensionState:
         """Process one observation; return the tension state of the gripper's edge."""
         p_g = obs.gripper(self.arm).position
-        f_raw = obs.wrench(self.arm).force
+        wrench = obs.wrench(self.arm)
+        f_raw = wrench.force
         self._gripper_positions = {"left": obs.left.position, "right": obs.right.position}
         g = self.gripper_index
         c = self._contact_index(g)
@@ -264,7 +268,7 @@ class ModelEstimator:
             # (never the distance to its own estimate, which can collapse)
             s = self.graph.arc_lengths()
             self.contact_filter.edge_length = max(abs(s[g] - s[c]), 1e-3)
-        if filtered and self._accumulate(obs.time, p_g, f_raw):  # the graph changed
+        if filtered and self._accumulate(obs.time, p_g, f_raw, wrench.torque):  # graph changed
             g = self.gripper_index
             c = self._contact_index(g)
         if taut and self.learn_elasticity:
@@ -276,18 +280,27 @@ class ModelEstimator:
         self._update_graph(obs, g, c)
         return self.state
 
-    def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray) -> bool:
-        """Add a sample; every estimation period, run the filter. True if the graph changed."""
+    def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray, tau: FloatArray) -> bool:
+        """Add a sample; every estimation period, run the filter. True if the graph changed.
+
+        The filter sees the period's mean wrench; its lines run through the
+        whole wrench's line of action (:mod:`~tautwire.estimation.force_line`),
+        wherever the cable leaves the fingers.
+        """
         if self._window_start is None:
             self._window_start = time
         self._sum_p += p_g
         self._sum_f += f_raw
+        self._sum_tau += tau
         self._n += 1
         if time - self._window_start + 1e-9 < self.estimation_period:
             return False
         p_mean, f_mean = self._sum_p / self._n, self._sum_f / self._n
+        tau_mean = self._sum_tau / self._n
+        p_line = line_point(p_mean, f_mean, tau_mean)  # on the cable's line of action
         self._sum_p[:] = 0.0
         self._sum_f[:] = 0.0
+        self._sum_tau[:] = 0.0
         self._n = 0
         self._window_start = None
         kf = self.contact_filter
@@ -297,14 +310,15 @@ class ModelEstimator:
             axis, sense, radius = peg
             if kf.radius is None:
                 kf.make_round(radius, RADIUS_STD)
-            result = kf.update(p_mean, f_mean, side_towards_axis(f_mean, axis, sense))
+            side = side_towards_axis(f_mean, axis, sense)
+            result = kf.update(p_mean, f_mean, side, torque=tau_mean)
         else:
-            result = kf.update(self._on_axis(p_mean, f_mean), f_mean)
+            result = kf.update(self._on_axis(p_mean, f_mean), f_mean, torque=tau_mean)
         self.iterations += 1
-        self._recent.append((p_mean, f_mean))
+        self._recent.append((p_line, f_mean))
         if result.changed and result.estimate is not None:
             self.changes.append(self.iterations - 1)
-            added = self._add_contact(result.estimate, p_mean)
+            added = self._add_contact(result.estimate, p_line)
             peg = self._round_contact()
             if peg is not None:
                 # a peg: the gated lines were fitted as if through a point;
@@ -321,7 +335,7 @@ class ModelEstimator:
         # a line that misses the contact may meet a peg of the design; one
         # that still fits it may already rest on a peg in between
         tolerance = TANGENT_TOLERANCE if result.used else DESIGN_TOLERANCE
-        return self._peg_change(p_mean, f_mean, tolerance)
+        return self._peg_change(p_line, f_mean, tolerance)
 
     def _peg_change(self, p_g: FloatArray, f: FloatArray, tolerance: float) -> bool:
         """Declare a change at once if a line is tangent to a peg of the board design.

@@ -9,13 +9,13 @@ from numpy.typing import ArrayLike
 
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import turn_x_onto
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 
@@ -103,6 +103,7 @@ class RotateAroundFeaturePoint(Primitive):
         self._previous = None
         self._slack.reset()
         self._ever_taut = False
+        self._axis = ToolAxis()
         if self._default_timeout:
             # the nominal time at the speed the gripper's speed limit allows on this circle
             contact = ctx.estimator.contact_position()
@@ -131,8 +132,10 @@ class RotateAroundFeaturePoint(Primitive):
             speed = limit / radius
         step = math.copysign(speed, self.angle) / ctx.controller.motion.k_p
         target = state.contact + _rotate(me.position - state.contact, self.axis, step)
-        # keep the tool x-axis along the cable (contact -> gripper), as measured
-        q_target = turn_x_onto(me.orientation, -state.direction) if state.taut else me.orientation
+        # keep the tool axis the cable leaves along on the cable, as measured
+        q_target = (
+            self._axis.target(me.orientation, state.direction) if state.taut else me.orientation
+        )
         desired = with_pose(current_pose(obs), self.arm, Pose(target, q_target))
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)

@@ -8,7 +8,6 @@ import numpy as np
 
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import turn_x_onto
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import ClipHeight, PivotPress, push_tension
@@ -18,6 +17,7 @@ from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 #: Height [m] above the seat at which the cable is brought over the clip.
@@ -98,6 +98,7 @@ class SingleArmClipping(Primitive):
         self._pressed_to = 0.0
         self.attempts = 1
         self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
+        self._axis = ToolAxis()
         self._hold = current_pose(obs)
         self._slack = SlackWatch(1.0)
         if info is None:
@@ -242,7 +243,9 @@ class SingleArmClipping(Primitive):
                     self.phase, self._deeper = "push", self._pressed_to + PRESS_EXTRA
         if self._slack.update(obs.time, state.tension, force):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
-        q_target = turn_x_onto(me.orientation, -state.direction) if state.taut else me.orientation
+        q_target = (
+            self._axis.target(me.orientation, state.direction) if state.taut else me.orientation
+        )
         desired = with_pose(self._hold, self.arm, Pose(target, q_target))
         return Command(tension_twist(ctx, obs, self.arm, desired, force, state))
 

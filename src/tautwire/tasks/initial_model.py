@@ -149,6 +149,7 @@ def initial_context(
         arm,
         force_limit=robot.force_limit,
         force_noise=robot.sensor.noise_force,
+        torque_noise=robot.sensor.noise_torque,
         control_period=robot.control_period,
         k_initial=100.0 if k_initial is None else k_initial,
         estimation_period=estimation_period,
