@@ -111,7 +111,7 @@ def test_static_gripper_never_starts_the_filter():
 
 
 def test_nan_position_does_not_poison_the_filter():
-    contact, p, f, tau = _exit_offset_samples(np.random.default_rng(3), n=80, exit_offset=0.0)
+    contact, p, f, _ = _exit_offset_samples(np.random.default_rng(3), n=80, exit_offset=0.0)
     kf = ContactPointFilter(force_noise=0.05)
     for j in range(len(p)):
         if j in (30, 50):
