@@ -17,6 +17,10 @@ CAUSES: tuple[str, ...] = (
     "precondition",  # the model's state does not allow the primitive (e.g. not held by two)
     "missed",  # a grasp closed on nothing
     "not_aligned",  # the gripper could not be aligned with the cable
+    "sensor_stale",  # the sensor's data stopped advancing or was unusable for too long
+    "sensor_bias",  # the force sensor's bias drifted beyond what the estimates tolerate
+    "robot_error",  # the robot failed: repeated lost commands or any other robot exception
+    "workspace",  # the primitive kept driving a gripper out of the workspace
     "diverged",  # the simulated world blew up
     "error",  # an exception inside the primitive or the robot
 )

@@ -7,6 +7,7 @@ only :class:`Command`.
 
 from tautwire.robot.arm import ARMS, Arm, arm_index
 from tautwire.robot.command import Command, GripperCommand
+from tautwire.robot.communication_error import RobotCommunicationError
 from tautwire.robot.observation import GripperState, Observation, Wrench
 from tautwire.robot.robot import Robot
 
@@ -18,6 +19,7 @@ __all__ = [
     "GripperState",
     "Observation",
     "Robot",
+    "RobotCommunicationError",
     "Wrench",
     "arm_index",
 ]

@@ -2,8 +2,11 @@
 
 The runner enforces what no primitive may forget: the force limit (a
 measured force above it ends the step with cause ``force_limit``), the
-primitive's timeout, and a clean end with cause ``diverged`` or ``error``
-when the robot (e.g. the simulated world) fails.
+primitive's timeout, and a clean end when the robot or its data fail. Every
+sample and command goes through a :class:`~tautwire.tasks.robot_guard.RobotGuard`
+(non-finite, stale and outlying samples, lost commands, robot exceptions,
+the workspace): the primitive is stepped only on a fresh, accepted sample,
+and the robot holds still otherwise. A failed step ends with a zero twist.
 """
 
 from __future__ import annotations
@@ -15,6 +18,7 @@ from dataclasses import dataclass
 from tautwire.errors import TautwireError
 from tautwire.primitives import Outcome, Primitive, PrimitiveContext
 from tautwire.robot import Command, Observation, Robot
+from tautwire.tasks.robot_guard import RobotGuard
 
 
 @dataclass(frozen=True)
@@ -73,24 +77,41 @@ def run_step(
     """Run ``primitive`` on ``robot`` until it succeeds or fails.
 
     Args:
-        robot: The robot (simulated or real).
+        robot: The robot (simulated or real). A :class:`RobotGuard` is used
+            as it is: create one per run, so that its state (last good
+            sample, tare) lasts across the steps. Any other robot is wrapped
+            in a guard for this step only (no tare, no workspace, no
+            frozen-sensor check: those need the run's settings).
         primitive: A fresh primitive.
         ctx: The shared context (model, estimators, controller).
-        on_tick: Called after every control period (recording, plotting).
+        on_tick: Called after every control period in which the primitive
+            was stepped (recording, plotting).
         force_limit: Force limit [N]; default ``ctx.limits.max_force``.
 
     Returns:
-        The step's report. Exceptions of the robot end the step as a
-        failure (``diverged`` when the exception says so, else ``error``).
+        The step's report. Failures of the robot or its data end the step
+        with the guard's cause (``sensor_stale``, ``robot_error``,
+        ``workspace``, ``diverged``); an exception of the primitive with
+        ``error`` (or the cause the exception names).
     """
     limit = ctx.limits.max_force if force_limit is None else force_limit
+    guard = robot if isinstance(robot, RobotGuard) else RobotGuard(robot, force_limit=limit)
+    guard.begin_step()
     max_force = 0.0
-    obs = robot.observe()
-    t0 = obs.time
+    obs = guard.observe()
+    t0 = guard.time
+    started = False
     outcome: Outcome
     try:
-        primitive.start(obs, ctx)
         while True:
+            fault = guard.fault
+            if fault is not None:
+                outcome = fault
+                break
+            if not guard.fresh:
+                guard.hold()
+                obs = guard.observe()
+                continue
             force = _max_measured_force(obs)
             max_force = max(max_force, force)
             if force > limit:
@@ -98,26 +119,30 @@ def run_step(
                     "force_limit", f"measured {force:.2f} N, above the limit of {limit:g} N"
                 )
                 break
+            if not started:
+                primitive.start(obs, ctx)
+                started = True
             command = primitive.step(obs)
             if primitive.outcome.done:
                 outcome = primitive.outcome
                 break
-            robot.act(command)
+            guard.act(command)
             if on_tick is not None:
                 on_tick(TickRecord(obs, command, primitive, ctx))
-            obs = robot.observe()
+            obs = guard.observe()
     except TautwireError as exc:
         cause = getattr(exc, "cause", None) or "error"
         outcome = Outcome.failure(str(cause), f"{type(exc).__name__}: {exc}")
     except (FloatingPointError, ValueError, ArithmeticError) as exc:
         outcome = Outcome.failure("error", f"{type(exc).__name__}: {exc}")
-    end = robot.observe().time if outcome.cause not in ("diverged", "error") else obs.time
+    if outcome.status == "failure" and outcome.cause != "diverged":
+        guard.stop()
     return StepReport(
         primitive.name,
         primitive.letter,
         outcome.status,
         outcome.cause,
         outcome.detail,
-        end - t0,
+        guard.time - t0,
         max_force,
     )
