@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.sim import ClipSpec, SimWorld
 from tautwire.sim.ground_truth import GroundTruth
 from tests.sim.scenes import anchor_and_gripper, peg_scene, rest
 
@@ -47,3 +48,69 @@ def test_peg_contact_lies_on_the_axis_at_the_cable_height() -> None:
     anchor = truth.contact("A")
     assert anchor is not None and np.allclose(anchor.point, [0.0, 0.0, 0.12])
     assert truth.contact("nothing") is None
+
+
+def test_span_of_a_taut_cable_from_its_anchor() -> None:
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.3, 0.0, 0.3], 0.29, 200.0)
+    rest(world, 0.5)
+    truth = GroundTruth(world)
+    span = truth.span("W", "left")
+    assert span is not None and span.fixture == "A"
+    assert span.contact is not None and np.allclose(span.contact, [0.0, 0.0, 0.3])
+    assert span.leave_vertex == 0 and span.held_vertex == len(truth.polyline("W")) - 1
+    assert span.rest_length == pytest.approx(0.29)
+    # the mean elastic tension, and the noise-free force the gripper feels
+    assert span.taut and span.tension == pytest.approx(truth.tensions("W").mean())
+    assert span.tension == pytest.approx(float(np.linalg.norm(world.wrench("left")[0])), rel=0.02)
+    assert truth.span_tension(span) == pytest.approx((span.tension, True))
+    assert truth.max_force >= 0.98 * span.tension
+    assert truth.span("W", "right") is None  # the right gripper holds nothing
+    assert truth.starts_anchored("W") and truth.fixture_type("A") == "anchor"
+
+
+def test_span_leaves_from_the_peg_the_cable_bears_on() -> None:
+    world = peg_scene()
+    twist = np.zeros(12)
+    twist[0:3] = [0.02, 0.01, 0.0]
+    world.set_twist(twist)
+    for _ in range(500):
+        world.step()
+    truth = GroundTruth(world)
+    span = truth.span("W", "left")
+    assert span is not None and span.fixture == "P"
+    assert truth.fixture_type("P") == "peg" and truth.peg_radius("P") == 0.006
+    peg = truth.contact("P")
+    assert peg is not None and span.contact is not None and np.allclose(span.contact, peg.point)
+    # the cable leaves the peg at its radius plus the cable's (and MuJoCo's margin)
+    off_axis = float(np.hypot(*(span.leave[:2] - [0.15, 0.05])))
+    assert 0.006 + 0.0025 - 1e-3 <= off_axis <= 0.006 + 0.0025 + 0.005
+    assert 0 < span.leave_vertex < span.held_vertex
+    tensions = truth.tensions("W")[span.leave_vertex : span.held_vertex]
+    assert span.tension == pytest.approx(tensions.mean()) and span.taut
+    with pytest.raises(InvalidArgumentError, match="not a peg"):
+        truth.peg_radius("A")
+    with pytest.raises(InvalidArgumentError, match="fixtures"):
+        truth.fixture_type("nope")
+
+
+def _clip_world(via: bool) -> SimWorld:
+    """An anchor and a clip on the line to the gripper, the cable routed through it or not."""
+    seat = [0.15, 0.0, 0.3] if via else [0.15, 0.0, 0.25]
+    return anchor_and_gripper(
+        [0.0, 0.0, 0.3],
+        [0.3, 0.0, 0.3],
+        0.31,
+        fixtures=(ClipSpec("C", seat, 0.0, 2.0),),
+        via=("C",) if via else (),
+    )
+
+
+@pytest.mark.parametrize("via", [True, False])
+def test_a_cable_is_clipped_only_when_it_sits_in_the_jaws(via: bool) -> None:
+    world = _clip_world(via)
+    rest(world, 0.3)
+    truth = GroundTruth(world)
+    assert truth.clipped("C", "W") is via
+    assert truth.fixture_type("C") == "clip"
+    with pytest.raises(InvalidArgumentError, match="not a clip"):
+        truth.clipped("A", "W")

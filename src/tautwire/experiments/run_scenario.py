@@ -10,7 +10,7 @@ import json
 import math
 import time
 from collections.abc import Callable
-from dataclasses import asdict, dataclass, field
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -18,6 +18,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import TautwireError
+from tautwire.experiments.truth import RunAudit
 from tautwire.model import PathGraph
 from tautwire.primitives import PrimitiveContext, make_primitive
 from tautwire.scenario import Scenario
@@ -26,6 +27,7 @@ from tautwire.sim.ground_truth import GroundTruth
 from tautwire.sim.world import SimWorld
 from tautwire.tasks import StepReport, TickRecord, run_step
 from tautwire.tasks.initial_model import initial_context
+from tautwire.tasks.scenario_guard import scenario_guard
 
 FloatArray = NDArray[np.float64]
 
@@ -56,10 +58,16 @@ class RunResult:
     sim_time: float
     wall_time: float
     files: dict[str, str] = field(default_factory=dict)
+    false_successes: int = 0
+    true_max_force: float = 0.0
+    contact_consistency: dict[str, Any] = field(default_factory=dict)
+    audit: RunAudit | None = field(default=None, repr=False)
 
     def to_dict(self) -> dict[str, Any]:
-        """The result as JSON-ready data."""
-        return asdict(self)
+        """The result as JSON-ready data (without the ``audit``)."""
+        data = asdict(replace(self, audit=None))
+        data.pop("audit")
+        return data
 
     def to_json(self) -> str:
         """The result as one JSON document."""
@@ -154,28 +162,41 @@ def run_scenario(
     t_wall = time.perf_counter()
     seed = scenario.seed if seed is None else seed
     world = build_world(scenario, seed=seed, **sim_options)
-    robot = robot_of(world, seed)
+    robot = scenario_guard(robot_of(world, seed, scenario.faults), scenario)  # once per run
     truth = truth_of(world)
     if on_truth is not None:
         on_truth(truth)
     if on_world is not None:
         on_world(world)
     ctx = initial_context(scenario, estimation_period=estimation_period)
+    cable = (scenario.cables[0]).name
+    audit = RunAudit(truth, cable, ctx.arm)
     reports: list[StepReport] = []
     for i, step in enumerate(scenario.task):
+        audit.start_step(step.letter, step.params)
+
+        def tick(record: TickRecord) -> None:
+            audit.tick(record.context, record.observation.time)
+            if on_tick is not None:
+                on_tick(record)
+
         try:
             primitive = make_primitive(step.primitive, **step.params)
         except TautwireError as exc:
             report = StepReport(step.primitive, step.letter, "failure", "error", str(exc), 0.0, 0.0)
         else:
-            report = run_step(robot, primitive, ctx, on_tick=on_tick)
+            report = run_step(robot, primitive, ctx, on_tick=tick)
+        audit.end_step(report.success, ctx)
         reports.append(report)
         if on_step is not None:
             on_step(i, report)
         if not report.success:
             break
-    cable = (scenario.cables[0]).name
-    success = len(reports) == len(scenario.task) and all(r.success for r in reports)
+    success = (
+        len(reports) == len(scenario.task)
+        and all(r.success for r in reports)
+        and audit.false_successes == 0
+    )
     steps = [
         {
             "primitive": r.primitive,
@@ -185,9 +206,12 @@ def run_scenario(
             "detail": r.detail,
             "sim_time": r.sim_time,
             "max_force": r.max_force,
+            "cable": cable,
+            "truth": check.to_dict(),
         }
-        for r in reports
+        for r, check in zip(reports, audit.checks, strict=True)
     ]
+    audit.finish(ctx)
     k_hat = ctx.estimator.elasticity.k_hat
     result = RunResult(
         scenario=scenario.name,
@@ -203,6 +227,10 @@ def run_scenario(
         max_force=max((r.max_force for r in reports), default=0.0),
         sim_time=sum(r.sim_time for r in reports),
         wall_time=time.perf_counter() - t_wall,
+        false_successes=audit.false_successes,
+        true_max_force=truth.max_force,
+        contact_consistency=audit.consistency(),
+        audit=audit,
     )
     return result, ctx, truth
 

@@ -6,6 +6,7 @@ primitive or estimator may. It reads the world's private physics state.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mujoco
@@ -13,11 +14,16 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
-from tautwire.robot.arm import ARMS
+from tautwire.robot.arm import ARMS, Arm
 from tautwire.sim.spec import AnchorSpec, ClipSpec, PegSpec
 from tautwire.sim.world import SimWorld
 
 FloatArray = NDArray[np.float64]
+
+#: A cable vertex this close [m] to a fixture's surface (beyond the cable's
+#: radius) that the cable is in contact with counts as touching it: MuJoCo's
+#: contact margin and the polygonal cable keep the vertices a few mm off.
+NEAR = 0.005
 
 
 @dataclass(frozen=True)
@@ -38,6 +44,44 @@ class FixtureContact:
     cable: str
     point: FloatArray
     force: float
+
+
+@dataclass(frozen=True)
+class TautSpan:
+    """The straight part of a cable between a gripper and the last fixture before it.
+
+    Attributes:
+        cable: The cable's name.
+        arm: The gripper that holds it.
+        fixture: The fixture the span leaves from (the nearest along the
+            cable towards its start that the cable truly bears on), or None
+            when the cable touches none before the gripper (a free end).
+        contact: The fixture's true contact point [m] as
+            :class:`FixtureContact` defines it (None without a fixture).  # (3,)
+        leave: The cable vertex where the span leaves the fixture [m]
+            (the anchor itself, or the last vertex touching a peg or a clip).  # (3,)
+        middle: The cable vertex half way along the span [m].  # (3,)
+        held: The held vertex [m] (at the tool centre point).  # (3,)
+        tension: Mean elastic tension [N] of the span's segments.
+        taut: Whether every segment of the span is stretched (tension > 0).
+        leave_vertex: Index of the ``leave`` vertex.
+        held_vertex: Index of the ``held`` vertex.
+        rest_length: Rest length [m] of the span (along the cable between
+            the two vertices).
+    """
+
+    cable: str
+    arm: Arm
+    fixture: str | None
+    contact: FloatArray | None
+    leave: FloatArray
+    middle: FloatArray
+    held: FloatArray
+    tension: float
+    taut: bool
+    leave_vertex: int
+    held_vertex: int
+    rest_length: float
 
 
 class GroundTruth:
@@ -106,10 +150,177 @@ class GroundTruth:
         """True axial spring constant k [N/m] of the whole cable."""
         return float(self._index(cable).spec.stiffness)
 
+    def starts_anchored(self, cable: str) -> bool:
+        """Whether ``cable``'s first vertex is fixed to an anchor."""
+        return self._index(cable).spec.start is not None
+
     def length(self, cable: str) -> float:
         """Current length [m] of ``cable`` along its polyline."""
         p = self.polyline(cable)
         return float(np.sum(np.linalg.norm(np.diff(p, axis=0), axis=1)))
+
+    @property
+    def max_force(self) -> float:
+        """Largest force [N] a gripper truly transmitted since the world's last reset.
+
+        The noise-free force of every control period (:attr:`SimWorld.max_force`).
+        """
+        return self._world.max_force
+
+    def gripper_position(self, arm: Arm) -> FloatArray:
+        """The true tool centre point [m] of ``arm``'s gripper."""
+        return self._world.gripper_pose(arm)[0]
+
+    def held(self, arm: Arm) -> tuple[str, int] | None:
+        """(cable, vertex) that ``arm`` truly holds, or None."""
+        return self._world.held(arm)
+
+    def fixture_type(self, name: str) -> str:
+        """``"anchor"``, ``"peg"`` or ``"clip"``: the type of fixture ``name``."""
+        fixture = self._fixture(name)
+        if isinstance(fixture, PegSpec):
+            return "peg"
+        if isinstance(fixture, ClipSpec):
+            return "clip"
+        return "anchor"
+
+    def peg_radius(self, name: str) -> float:
+        """Radius [m] of peg ``name``."""
+        fixture = self._fixture(name)
+        if not isinstance(fixture, PegSpec):
+            raise InvalidArgumentError(f"fixture {name!r} is not a peg")
+        return float(fixture.radius)
+
+    def fixture_names(self) -> tuple[str, ...]:
+        """Names of every fixture of the board."""
+        return tuple(f.name for f in self._world.spec.fixtures)
+
+    def _fixture(self, name: str) -> AnchorSpec | PegSpec | ClipSpec:
+        for f in self._world.spec.fixtures:
+            if f.name == name:
+                return f
+        raise InvalidArgumentError(
+            f"no fixture named {name!r} (fixtures: {list(self.fixture_names())})"
+        )
+
+    def clipped(self, clip: str, cable: str) -> bool:
+        """Whether ``cable`` truly sits in the jaws of clip ``clip``.
+
+        The cable's centre line, where it passes nearest the seat, lies within
+        the slot (along it within half the clip's length, across it within
+        the channel's half width) and below the axes of the closed jaws: it
+        has passed the jaws' narrowest gap, which a cable resting on the
+        jaws has not.
+        """
+        spec = self._fixture(clip)
+        if not isinstance(spec, ClipSpec):
+            raise InvalidArgumentError(f"fixture {clip!r} is not a clip")
+        design = self._world.scene.clips[clip]
+        pts = self.polyline(cable)
+        q = _closest_on_polyline(pts, spec.position) - spec.position
+        along = float(q @ spec.direction)
+        across = float(np.hypot(q[0], q[1]) ** 2 - along**2)
+        return (
+            abs(along) <= 0.5 * self._world.options.clip_length
+            and math.sqrt(max(across, 0.0)) <= design.wall_gap
+            and float(q[2]) < design.jaw_height
+        )
+
+    def span(self, cable: str, arm: Arm) -> TautSpan | None:
+        """The span of ``cable`` from the last fixture before ``arm``'s gripper to it.
+
+        Scans the cable from the held vertex towards its start for the first
+        vertex at a fixture that the cable is in contact with (MuJoCo
+        contacts): a peg (vertex within the peg's radius plus the cable's
+        radius plus ``NEAR`` of its axis) or a clip (vertex within its
+        slot); else the anchored start. None when ``arm`` does not hold
+        ``cable``.
+        """
+        held = self._world.held(arm)
+        if held is None or held[0] != cable:
+            return None
+        idx = self._index(cable)
+        pts = self.polyline(cable)
+        h = held[1]
+        step = -1 if h > 0 else 1
+        touched = [
+            self._world.spec.fixture(name) for name, c in self._contact_pairs() if c == cable
+        ]
+        fixture: str | None = None
+        i = h + step
+        while 0 <= i < len(pts):
+            fixture = self._touching(pts[i], idx.spec.radius, touched)
+            if fixture is not None:
+                break
+            i += step
+        if fixture is None:
+            i = 0 if step < 0 else len(pts) - 1
+            if step < 0 and idx.spec.start is not None:
+                fixture = idx.spec.start
+        lo, hi = min(i, h), max(i, h)
+        tension = self.tensions(cable)[lo:hi] if hi > lo else np.zeros(1)
+        arc = self._world.scene.discretizations[cable].arc
+        contact = None
+        if fixture is not None:
+            found = self.contact(fixture)
+            contact = None if found is None else found.point
+        return TautSpan(
+            cable,
+            arm,
+            fixture,
+            contact,
+            pts[i].copy(),
+            pts[(i + h) // 2].copy(),
+            pts[h].copy(),
+            float(np.mean(tension)),
+            bool(np.all(tension > 0.0)),
+            i,
+            h,
+            float(abs(arc[h] - arc[i])),
+        )
+
+    def span_tension(self, span: TautSpan) -> tuple[float, bool]:
+        """Mean elastic tension [N] of ``span``'s segments now, and whether all are stretched.
+
+        Cheaper than :meth:`span` when the span's vertices are known.
+        """
+        lo, hi = sorted((span.leave_vertex, span.held_vertex))
+        tension = self.tensions(span.cable)[lo:hi] if hi > lo else np.zeros(1)
+        return float(np.mean(tension)), bool(np.all(tension > 0.0))
+
+    def _contact_pairs(self) -> set[tuple[str, str]]:
+        """(fixture, cable) of every MuJoCo contact between a cable and a fixture."""
+        d = self._world._data
+        pairs: set[tuple[str, str]] = set()
+        for i in range(d.ncon):
+            c = d.contact[i]
+            geom = int(c.geom[0]) if c.geom[0] >= 0 else int(c.geom[1])
+            flex = int(c.flex[1]) if c.flex[1] >= 0 else int(c.flex[0])
+            if geom in self._geom_fixture and flex in self._flex_cable:
+                pairs.add((self._geom_fixture[geom], self._flex_cable[flex]))
+        return pairs
+
+    def _touching(
+        self, p: FloatArray, cable_radius: float, fixtures: list[AnchorSpec | PegSpec | ClipSpec]
+    ) -> str | None:
+        """Which of ``fixtures`` (pegs, clips) a cable vertex at ``p`` [m] lies at, if any."""
+        for f in fixtures:
+            if isinstance(f, PegSpec):
+                d = float(np.hypot(p[0] - f.position[0], p[1] - f.position[1]))
+                top = f.position[2] + f.height
+                if d <= f.radius + cable_radius + NEAR and p[2] <= top + cable_radius:
+                    return f.name
+            elif isinstance(f, ClipSpec):
+                q = p - f.position
+                along = float(q @ f.direction)
+                across = math.sqrt(max(float(q[0] ** 2 + q[1] ** 2) - along**2, 0.0))
+                design = self._world.scene.clips[f.name]
+                if (
+                    abs(along) <= 0.5 * self._world.options.clip_length
+                    and across <= design.wall_gap + design.jaw_radius + NEAR
+                ):
+                    return f.name
+        return None
 
     def contacts(self) -> tuple[FixtureContact, ...]:
         """Every fixture in contact with a cable, with its true contact point."""
@@ -175,3 +386,15 @@ class GroundTruth:
             clip.position + sign * 0.5 * world.options.clip_length * clip.direction
         )
         return exit_point
+
+
+def _closest_on_polyline(polyline: FloatArray, p: FloatArray) -> FloatArray:
+    """The point of ``polyline`` (N, 3) nearest ``p`` [m]."""
+    a, b = polyline[:-1], polyline[1:]
+    ab = b - a
+    t = np.clip(
+        np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-18), 0, 1
+    )
+    q = a + t[:, None] * ab
+    out: FloatArray = q[int(np.argmin(np.linalg.norm(q - p, axis=1)))]
+    return out

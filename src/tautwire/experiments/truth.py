@@ -1,0 +1,664 @@
+"""Truth checks: did the simulator confirm what a step reported?
+
+After each step of a simulated run, :func:`check_step` compares what the
+step reported with the simulator's state (:class:`GroundTruth` only, never
+the robot's observations): the result's ``truth`` field of SCENARIO.md,
+``{"agrees": bool, "detail": str}``.
+
+What a success claims, and how it is checked:
+
+tension held (A, D)
+    The true tension of the span between the gripper and the fixture it is
+    taut against (the mean elastic tension of its segments) is there: its
+    mean over the step's last ``hold_time`` (0.5 s, what D judges) is within
+    :data:`TENSION_TOLERANCE` of the set point (D's own 10 % band plus its
+    5 % set-point swing), and every segment of the span is stretched at the
+    end. (The weight-compensated tension D controls is the tension along the
+    chord, which the span's mean tension is for a shallow sag.)
+rotation done (I)
+    The cable truly turned by the angle about its true contact, to within
+    :data:`ANGLE_TOLERANCE`: the direction from the true contact (a peg's
+    axis point) to the held vertex, projected onto the plane normal to the
+    axis, sampled every 10 control periods (a rotation turns at most 0.04
+    rad in between, far below the half turn that unwrapping needs). This is
+    the direction the taut cable takes once it has settled: a soft cable
+    bows behind a moving gripper, and the direction of its middle lags the
+    gripper by several degrees at the end of a step.
+clipped (C, F)
+    The cable sits in the clip's jaws (:meth:`GroundTruth.clipped`).
+grasped (H)
+    The gripper truly holds the cable.
+the model (every successful step)
+    Each trusted contact estimate of the model (a contact or fixed point
+    whose filter std is at most the estimator's ``trusted_std``, 10 mm: the
+    estimates the robot acts on) is within tolerance of the true contact it
+    stands for: :data:`CONTACT_TOLERANCE` (3 mm) for an anchor or a clip,
+    the peg's radius + 3 mm for a peg (whose truth is the point on its axis
+    at the cable's height). And no point is made up: every contact or fixed
+    point of the model stands for a fixture the cable truly touches (a point
+    named after a fixture stands for it; an unnamed, estimated point for the
+    nearest true contact within :data:`ASSOCIATION_RADIUS` that no other
+    point stands for).
+
+A failed step always agrees: a failure with a named cause claims nothing
+about the world, so it cannot be false (the detail still says what the
+simulator showed). Only successes can disagree: those are the run's
+``false_successes``.
+
+Contact consistency (NEES coverage): :class:`FilterWatch` records, at every
+contact filter iteration, the filter's estimate and covariance against the
+true contact of the span the filter observes. A sample counts once the
+filter is converged in the robot's own sense (its largest std at most
+``trusted_std``, when the robot starts to act on it); it is consistent when
+the error is within 3 reported std on every axis (per axis, not the 3-D
+NEES).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.model import PathGraph
+from tautwire.primitives import PrimitiveContext
+from tautwire.robot import Arm
+from tautwire.sim.ground_truth import GroundTruth, TautSpan
+
+FloatArray = NDArray[np.float64]
+
+#: Tolerance [m] of a contact estimate: for an anchor or a clip; a peg adds its radius.
+CONTACT_TOLERANCE = 0.003
+#: An unnamed model point further [m] from every free true contact stands for none.
+ASSOCIATION_RADIUS = 0.03
+#: Allowed relative error of the true mean tension against the set point.
+TENSION_TOLERANCE = 0.15
+#: Window [s] over which the true tension is averaged (D's hold time).
+TENSION_WINDOW = 0.5
+#: Allowed error [rad] of the true angle turned against the commanded one.
+ANGLE_TOLERANCE = 0.1
+#: Control periods between two samples of the true span direction.
+DIRECTION_EVERY = 10
+#: Primitives whose success claims a tension (letters).
+TENSION_PRIMITIVES = ("A", "D")
+#: Primitives whose success claims a clipped cable (letters).
+CLIP_PRIMITIVES = ("C", "F")
+
+
+@dataclass(frozen=True)
+class TruthCheck:
+    """Whether the simulator agrees with a step's outcome (SCENARIO.md ``truth``).
+
+    Attributes:
+        agrees: True unless the step reported a success the simulator denies.
+        detail: What was checked and what the simulator showed.
+    """
+
+    agrees: bool
+    detail: str
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"agrees": bool, "detail": str}``."""
+        return {"agrees": self.agrees, "detail": self.detail}
+
+
+@dataclass(frozen=True)
+class ContactCheck:
+    """One contact or fixed point of the model against the truth.
+
+    Attributes:
+        label: The point's label (a fixture name, or ``"estimated"``).
+        fixture: The fixture the point stands for; None if it stands for
+            no real contact (made up).
+        fixture_type: ``"anchor"``, ``"peg"`` or ``"clip"`` (None if made up).
+        estimate: The model's position [m].  # (3,)
+        truth: The true contact [m] (None if made up).  # (3,)
+        error: Distance [m] from the true contact (None if made up).
+        tolerance: Allowed error [m] (None if made up).
+        std: sqrt(diag(covariance)) [m], None for a design point without one.  # (3,)
+        trusted: Whether the robot trusts the estimate (std at most trusted_std).
+        reason: Why the point is made up ("" otherwise).
+    """
+
+    label: str
+    fixture: str | None
+    fixture_type: str | None
+    estimate: FloatArray
+    truth: FloatArray | None
+    error: float | None
+    tolerance: float | None
+    std: FloatArray | None
+    trusted: bool
+    reason: str = ""
+
+    @property
+    def made_up(self) -> bool:
+        """Whether the point stands for no real contact."""
+        return self.fixture is None
+
+    @property
+    def within(self) -> bool:
+        """Whether the point is within tolerance of the contact it stands for."""
+        return (
+            self.error is not None and self.tolerance is not None and self.error <= self.tolerance
+        )
+
+    def text(self) -> str:
+        """One phrase for a reader."""
+        if self.made_up:
+            return f"{self.label} at {_mm(self.estimate)} is made up ({self.reason})"
+        assert self.error is not None and self.tolerance is not None
+        std = "" if self.std is None else f", std {1e3 * float(np.max(self.std)):.1f} mm"
+        return (
+            f"{self.label}: {1e3 * self.error:.1f} mm from the true {self.fixture_type} "
+            f"{self.fixture} (tolerance {1e3 * self.tolerance:.1f} mm{std})"
+        )
+
+
+def _mm(p: FloatArray) -> str:
+    return "(" + ", ".join(f"{1e3 * float(v):.0f}" for v in p) + ") mm"
+
+
+def contact_tolerance(truth: GroundTruth, fixture: str) -> float:
+    """Allowed error [m] of an estimate of ``fixture``: 3 mm, plus the radius for a peg."""
+    if truth.fixture_type(fixture) == "peg":
+        return CONTACT_TOLERANCE + truth.peg_radius(fixture)
+    return CONTACT_TOLERANCE
+
+
+def true_contacts(truth: GroundTruth, cable: str) -> dict[str, FloatArray]:
+    """The true contact point [m] of every fixture ``cable`` touches, by fixture name."""
+    return {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
+
+
+def check_contacts(
+    graph: PathGraph, truth: GroundTruth, cable: str, trusted_std: float
+) -> list[ContactCheck]:
+    """Every contact and fixed point of ``graph`` against the true contacts of ``cable``.
+
+    Points named after a fixture stand for it (made up if the cable does not
+    touch it). Each unnamed point, nearest first, stands for the nearest
+    true contact within :data:`ASSOCIATION_RADIUS` that no other point
+    stands for, else it is made up.
+
+    Args:
+        graph: The model.
+        truth: The simulator's truth.
+        cable: The cable the model is of.
+        trusted_std: Largest std [m] of an estimate the robot acts on.
+    """
+    real = true_contacts(truth, cable)
+    fixtures = set(truth.fixture_names())
+    claimed: set[str] = set()
+    checks: list[ContactCheck | None] = []
+    unnamed: list[int] = []
+    points = [p for p in graph.points if p.kind in ("contact", "fixed")]
+    for k, pt in enumerate(points):
+        if pt.label in fixtures:
+            checks.append(_check(truth, pt.label, pt, real, trusted_std, claimed))
+        else:
+            checks.append(None)
+            unnamed.append(k)
+
+    def nearest(k: int) -> tuple[float, str | None]:
+        best: tuple[float, str | None] = (math.inf, None)
+        for name, point in real.items():
+            if name not in claimed:
+                d = float(np.linalg.norm(points[k].position - point))
+                best = min(best, (d, name), key=lambda b: b[0])
+        return best
+
+    while unnamed:
+        k = min(unnamed, key=lambda j: nearest(j)[0])
+        unnamed.remove(k)
+        d, name = nearest(k)
+        if name is not None and d <= ASSOCIATION_RADIUS:
+            checks[k] = _check(truth, name, points[k], real, trusted_std, claimed)
+        else:
+            where = "no true contact left" if name is None else f"{1e3 * d:.0f} mm from {name}"
+            checks[k] = _made_up(
+                points[k], trusted_std, f"the nearest free true contact is {where}"
+            )
+    return [c for c in checks if c is not None]
+
+
+def _std(covariance: FloatArray | None) -> FloatArray | None:
+    if covariance is None:
+        return None
+    out: FloatArray = np.sqrt(np.maximum(np.diag(covariance), 0.0))
+    return out
+
+
+def _made_up(pt: Any, trusted_std: float, reason: str) -> ContactCheck:
+    std = _std(pt.covariance)
+    trusted = std is not None and float(np.max(std)) <= trusted_std
+    return ContactCheck(
+        pt.label, None, None, pt.position.copy(), None, None, None, std, trusted, reason
+    )
+
+
+def _check(
+    truth: GroundTruth,
+    name: str,
+    pt: Any,
+    real: dict[str, FloatArray],
+    trusted_std: float,
+    claimed: set[str],
+) -> ContactCheck:
+    if name not in real:
+        return _made_up(pt, trusted_std, f"the cable does not touch {name}")
+    if name in claimed:
+        return _made_up(pt, trusted_std, f"another point already stands for {name}")
+    claimed.add(name)
+    std = _std(pt.covariance)
+    trusted = std is not None and float(np.max(std)) <= trusted_std
+    t = real[name]
+    return ContactCheck(
+        pt.label,
+        name,
+        truth.fixture_type(name),
+        pt.position.copy(),
+        t.copy(),
+        float(np.linalg.norm(pt.position - t)),
+        contact_tolerance(truth, name),
+        std,
+        trusted,
+    )
+
+
+def judge_model(checks: list[ContactCheck]) -> TruthCheck:
+    """Agrees when no point is made up and every trusted estimate is within tolerance."""
+    made_up = [c for c in checks if c.made_up]
+    wrong = [c for c in checks if not c.made_up and c.trusted and not c.within]
+    if made_up or wrong:
+        return TruthCheck(
+            False, "the model is wrong: " + "; ".join(c.text() for c in made_up + wrong)
+        )
+    trusted = [c for c in checks if c.trusted]
+    if not trusted:
+        return TruthCheck(True, "no trusted contact estimate, none made up")
+    return TruthCheck(True, "; ".join(c.text() for c in trusted))
+
+
+def _direction(span: TautSpan, axis: FloatArray) -> FloatArray | None:
+    """Unit direction from the span's true contact to the gripper, normal to ``axis``, or None."""
+    if span.contact is None:
+        return None
+    d = span.held - span.contact
+    d = d - axis * float(axis @ d)
+    n = float(np.linalg.norm(d))
+    if n < 1e-6:
+        return None
+    out: FloatArray = d / n
+    return out
+
+
+class StepWatch:
+    """Samples the truth of one step while it runs (cheaply, every control period).
+
+    Every control period the true mean tension of the gripper's span; every
+    :data:`DIRECTION_EVERY` periods the span itself (its fixture, vertices
+    and direction), from which the true angle it turned about ``axis``.
+
+    Args:
+        truth: The simulator's truth.
+        cable: The cable the step works on.
+        arm: The gripper that holds it.
+        axis: Rotation axis (world frame) to measure the angle turned about;
+            None: do not measure it.  # (3,)
+    """
+
+    def __init__(
+        self, truth: GroundTruth, cable: str, arm: Arm, axis: FloatArray | None = None
+    ) -> None:
+        self.truth = truth
+        self.cable = cable
+        self.arm: Arm = arm
+        self.axis = (
+            None if axis is None else np.asarray(axis, dtype=float) / float(np.linalg.norm(axis))
+        )
+        self.times: list[float] = []
+        self.tensions: list[float] = []
+        self.taut: list[bool] = []
+        self.turned = 0.0
+        self.span: TautSpan | None = None
+        #: The robot's stiffness estimate k_hat [N/m] when the step ended.
+        self.k_hat: float | None = None
+        self._ticks = 0
+        self._previous: FloatArray | None = None
+        self._sample_span()
+
+    def _sample_span(self) -> None:
+        self.span = self.truth.span(self.cable, self.arm)
+        if self.span is None or self.axis is None:
+            return
+        d = _direction(self.span, self.axis)
+        if d is None:
+            return
+        if self._previous is not None:
+            cross = float(self.axis @ np.cross(self._previous, d))
+            self.turned += math.atan2(cross, float(self._previous @ d))
+        self._previous = d
+
+    def tick(self, time: float) -> None:
+        """Record the truth after one control period ending at ``time`` [s]."""
+        self._ticks += 1
+        if self._ticks % DIRECTION_EVERY == 0:
+            self._sample_span()
+        if self.span is None:
+            return
+        tension, taut = self.truth.span_tension(self.span)
+        self.times.append(time)
+        self.tensions.append(tension)
+        self.taut.append(taut)
+
+    def finish(self) -> None:
+        """Take the last sample (the step's end state)."""
+        self._sample_span()
+        if self.span is not None:
+            tension, taut = self.truth.span_tension(self.span)
+            self.tensions.append(tension)
+            self.taut.append(taut)
+            self.times.append(self.times[-1] if self.times else 0.0)
+
+    def mean_tension(self, window: float = TENSION_WINDOW) -> float | None:
+        """Mean true span tension [N] over the last ``window`` [s], None without samples."""
+        if not self.tensions:
+            return None
+        end = self.times[-1]
+        recent = [f for t, f in zip(self.times, self.tensions, strict=True) if t >= end - window]
+        return float(np.mean(recent))
+
+    @property
+    def edge_stiffness(self) -> float | None:
+        """True spring constant [N/m] the gripper pulls against now, None without a span.
+
+        k L / L_s, with L_s the rest length from the anchored start of the
+        cable to the held vertex (pegs let the cable slide round them with
+        little friction, so the whole length from the anchor stretches), or
+        the span's own rest length for a cable without an anchored start.
+        """
+        if self.span is None:
+            return None
+        arc = self.truth.arc_lengths(self.cable)
+        if self.truth.starts_anchored(self.cable):
+            rest = abs(float(arc[self.span.held_vertex] - arc[0]))
+        else:
+            rest = self.span.rest_length
+        if rest <= 0.0:
+            return None
+        return self.truth.stiffness(self.cable) * float(arc[-1]) / rest
+
+
+def check_step(
+    letter: str,
+    params: dict[str, Any],
+    success: bool,
+    watch: StepWatch,
+    ctx: PrimitiveContext,
+    truth: GroundTruth,
+) -> TruthCheck:
+    """The truth of one finished step (see the module docstring).
+
+    Args:
+        letter: The primitive's letter ("" for moves without one).
+        params: The step's parameters (``force``, ``angle``, ``clip``, ``arm``).
+        success: Whether the step reported success.
+        watch: The step's :class:`StepWatch`, finished.
+        ctx: The primitives' context after the step (the model).
+        truth: The simulator's truth.
+    """
+    parts: list[str] = []
+    agrees = True
+    if letter in TENSION_PRIMITIVES and "force" in params:
+        ok, text = _tension_truth(float(params["force"]), watch)
+        agrees &= ok
+        parts.append(text)
+    if letter == "I" and watch.axis is not None:
+        ok, text = _rotation_truth(float(params["angle"]), watch)
+        agrees &= ok
+        parts.append(text)
+    if letter in CLIP_PRIMITIVES and "clip" in params:
+        clip = str(params["clip"])
+        ok = truth.clipped(clip, watch.cable)
+        agrees &= ok
+        parts.append(f"the cable is {'' if ok else 'not '}in the jaws of {clip}")
+    if letter == "H":
+        held = truth.held(watch.arm)
+        ok = held is not None and held[0] == watch.cable
+        agrees &= ok
+        parts.append(f"the {watch.arm} gripper {'holds' if ok else 'does not hold'} {watch.cable}")
+    model = judge_model(check_contacts(ctx.graph, truth, watch.cable, ctx.estimator.trusted_std))
+    agrees &= model.agrees
+    parts.append(model.detail)
+    detail = "; ".join(parts)
+    if not success:
+        return TruthCheck(True, f"a failure claims nothing; the simulator showed: {detail}")
+    return TruthCheck(agrees, detail)
+
+
+def _tension_truth(force: float, watch: StepWatch) -> tuple[bool, str]:
+    mean = watch.mean_tension()
+    if mean is None or watch.span is None:
+        return False, "the gripper holds no cable"
+    taut = bool(watch.taut[-1]) if watch.taut else False
+    error = abs(mean - force) / force
+    ok = taut and error <= TENSION_TOLERANCE
+    against = watch.span.fixture or "nothing"
+    return ok, (
+        f"true tension {mean:.2f} N against {against} (set point {force:.2f} N, "
+        f"{100 * error:.0f} % off, tolerance {100 * TENSION_TOLERANCE:.0f} %), "
+        f"{'taut' if taut else 'not taut'}"
+    )
+
+
+def _rotation_truth(angle: float, watch: StepWatch) -> tuple[bool, str]:
+    ok = abs(watch.turned - angle) <= ANGLE_TOLERANCE
+    return ok, (
+        f"the cable truly turned {math.degrees(watch.turned):.0f} deg "
+        f"(asked {math.degrees(angle):.0f} deg, tolerance {math.degrees(ANGLE_TOLERANCE):.0f} deg)"
+    )
+
+
+@dataclass(frozen=True)
+class FilterSample:
+    """The contact filter's estimate at one iteration against the truth.
+
+    Attributes:
+        time: Robot time [s].
+        iteration: The filter iteration.
+        fixture: The fixture the observed span leaves from (None: none).
+        round: Whether the filter estimates a round contact's axis.
+        estimate: The filter's estimate [m].  # (3,)
+        truth: What it estimates, truly [m]: the anchor, the clip's exit, a
+            peg's axis point at the cable's height (round) or the point where
+            the cable leaves the peg (a point estimate).  # (3,)
+        std: sqrt(diag(P)) [m].  # (3,)
+        trusted: Whether the largest std is at most the estimator's trusted_std.
+    """
+
+    time: float
+    iteration: int
+    fixture: str | None
+    round: bool
+    estimate: FloatArray
+    truth: FloatArray
+    std: FloatArray
+    trusted: bool
+
+    @property
+    def error(self) -> float:
+        """Distance [m] of the estimate from the truth."""
+        return float(np.linalg.norm(self.estimate - self.truth))
+
+    @property
+    def within_3std(self) -> bool:
+        """Whether the error is within 3 reported std on every axis."""
+        return bool(np.all(np.abs(self.estimate - self.truth) <= 3.0 * self.std))
+
+
+def _peg_leave_point(span: TautSpan, axis_point: FloatArray) -> FloatArray:
+    """Where the straight span, extended, is tangent to the peg's circle [m].
+
+    The circle is the one the cable's centre line keeps about the axis (its
+    radius measured at the vertex where the cable leaves the peg), at the
+    axis point's height.
+    """
+    u = span.middle - span.leave
+    u[2] = 0.0
+    un = float(np.linalg.norm(u))
+    radial = span.leave - axis_point
+    radial[2] = 0.0
+    radius = float(np.linalg.norm(radial))
+    if un < 1e-9 or radius < 1e-9:
+        return axis_point.copy()
+    u /= un
+    n = radial - u * float(u @ radial)
+    nn = float(np.linalg.norm(n))
+    if nn < 1e-9:
+        return axis_point.copy()
+    out: FloatArray = axis_point + radius * n / nn
+    return out
+
+
+@dataclass
+class FilterWatch:
+    """Records the contact filter against the truth at each of its iterations.
+
+    Args:
+        truth: The simulator's truth.
+        cable: The cable of the context's model.
+        arm: Its sensing gripper.
+    """
+
+    truth: GroundTruth
+    cable: str
+    arm: Arm
+    samples: list[FilterSample] = field(default_factory=list)
+    _iterations: int = 0
+
+    def tick(self, ctx: PrimitiveContext, time: float) -> None:
+        """Sample if the filter ran since the last call."""
+        estimator = ctx.estimator
+        if estimator.iterations == self._iterations:
+            return
+        self._iterations = estimator.iterations
+        kf = estimator.contact_filter
+        if not kf.running:
+            return
+        span = self.truth.span(self.cable, self.arm)
+        if span is None or span.fixture is None or span.contact is None:
+            return
+        true_point = span.contact
+        if self.truth.fixture_type(span.fixture) == "peg" and kf.radius is None:
+            true_point = _peg_leave_point(span, span.contact)
+        std = np.sqrt(np.maximum(np.diag(kf.P), 0.0))
+        self.samples.append(
+            FilterSample(
+                time,
+                estimator.iterations,
+                span.fixture,
+                kf.radius is not None,
+                kf.x.copy(),
+                np.asarray(true_point, dtype=float).copy(),
+                std,
+                float(np.max(std)) <= estimator.trusted_std,
+            )
+        )
+
+
+def coverage(samples: list[FilterSample]) -> tuple[int, float | None]:
+    """(converged samples, the fraction of them within 3 std on every axis)."""
+    converged = [s for s in samples if s.trusted]
+    if not converged:
+        return 0, None
+    return len(converged), sum(1 for s in converged if s.within_3std) / len(converged)
+
+
+class RunAudit:
+    """The truth of a whole run: one :class:`StepWatch` per step, the filter's samples.
+
+    ``run_scenario`` calls :meth:`start_step` before each step, :meth:`tick`
+    every control period, :meth:`end_step` after the step and
+    :meth:`finish` after the last.
+
+    Args:
+        truth: The simulator's truth.
+        cable: The cable of the model.
+        arm: Its sensing gripper.
+    """
+
+    def __init__(self, truth: GroundTruth, cable: str, arm: Arm) -> None:
+        self.truth = truth
+        self.cable = cable
+        self.arm: Arm = arm
+        self.filter = FilterWatch(truth, cable, arm)
+        self.watches: list[StepWatch] = []
+        self.checks: list[TruthCheck] = []
+        self.successes: list[bool] = []
+        #: The final model's contact and fixed points against the truth.
+        self.contacts: list[ContactCheck] = []
+        self._step: tuple[str, dict[str, Any]] | None = None
+
+    def start_step(self, letter: str, params: dict[str, Any]) -> StepWatch:
+        """Start watching a step of primitive ``letter`` with ``params``."""
+        arm = params.get("arm", self.arm)
+        axis = params.get("axis", (0.0, 0.0, 1.0)) if letter == "I" else None
+        watch = StepWatch(
+            self.truth,
+            self.cable,
+            arm if arm in ("left", "right") else self.arm,
+            None if axis is None else np.asarray(axis, dtype=float),
+        )
+        self.watches.append(watch)
+        self._step = (letter, dict(params))
+        return watch
+
+    def tick(self, ctx: PrimitiveContext, time: float) -> None:
+        """Sample the truth after a control period ending at ``time`` [s]."""
+        if self.watches:
+            self.watches[-1].tick(time)
+        self.filter.tick(ctx, time)
+
+    def end_step(self, success: bool, ctx: PrimitiveContext) -> TruthCheck:
+        """Check the step that just ended (it reported ``success``)."""
+        assert self._step is not None, "end_step without start_step"
+        letter, params = self._step
+        watch = self.watches[-1]
+        watch.finish()
+        k_hat = ctx.estimator.elasticity.k_hat
+        watch.k_hat = float(k_hat) if math.isfinite(k_hat) else None
+        check = check_step(letter, params, success, watch, ctx, self.truth)
+        self.checks.append(check)
+        self.successes.append(success)
+        self._step = None
+        return check
+
+    def finish(self, ctx: PrimitiveContext) -> None:
+        """Check the final model."""
+        self.contacts = check_contacts(ctx.graph, self.truth, self.cable, ctx.estimator.trusted_std)
+
+    @property
+    def false_successes(self) -> int:
+        """Steps that reported success while the simulator disagrees."""
+        return sum(
+            1 for s, c in zip(self.successes, self.checks, strict=True) if s and not c.agrees
+        )
+
+    @property
+    def samples(self) -> list[FilterSample]:
+        """The contact filter against the truth, one sample per iteration."""
+        return self.filter.samples
+
+    def consistency(self) -> dict[str, Any]:
+        """The NEES coverage of the run: converged samples and the fraction within 3 std."""
+        n, within = coverage(self.samples)
+        return {
+            "samples": n,
+            "within_3std": within,
+            "definition": "contact filter iterations whose largest std is at most the "
+            "estimator's trusted_std; error within 3 reported std on every axis",
+        }

@@ -1,0 +1,221 @@
+"""Truth checks on crafted cases: a wrong or made-up model reads as disagreeing."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from tautwire.experiments.truth import (
+    ANGLE_TOLERANCE,
+    CONTACT_TOLERANCE,
+    FilterSample,
+    StepWatch,
+    check_contacts,
+    check_step,
+    coverage,
+    judge_model,
+)
+from tautwire.model import PathGraph
+from tautwire.primitives import PrimitiveContext, make_context
+from tautwire.sim import PegSpec, SimWorld
+from tautwire.sim.ground_truth import GroundTruth
+from tests.sim.scenes import anchor_and_gripper, rest
+
+ANCHOR = np.array([0.0, 0.0, 0.12])
+PEG_AXIS = np.array([0.15, 0.05])
+PEG_RADIUS = 0.006
+
+
+@pytest.fixture(scope="module")
+def peg_world() -> tuple[SimWorld, GroundTruth]:
+    """A taut cable from an anchor round a peg to the left gripper; a second peg far away."""
+    world = anchor_and_gripper(
+        list(ANCHOR),
+        [0.35, 0.15, 0.12],
+        0.42,
+        stiffness=200.0,
+        fixtures=(
+            PegSpec("P", [0.15, 0.05, 0.10], PEG_RADIUS, 0.05),
+            PegSpec("Q", [0.6, -0.4, 0.0], 0.005, 0.05),
+        ),
+        via=("P",),
+    )
+    twist = np.zeros(12)
+    twist[0:3] = [0.02, 0.01, 0.0]  # take up the slack
+    world.set_twist(twist)
+    for _ in range(500):
+        world.step()
+    rest(world, 0.3)
+    return world, GroundTruth(world)
+
+
+def _graph(
+    points: list[tuple[str, str, np.ndarray, float | None]], gripper: np.ndarray
+) -> PathGraph:
+    """A model: (kind, label, position, std or None) per point, then the left gripper."""
+    positions = [p for _, _, p, _ in points] + [gripper]
+    graph = PathGraph.from_positions(
+        np.array(positions),
+        0.03,
+        kinds=[k for k, _, _, _ in points] + ["gripper"],  # type: ignore[list-item]
+        labels=[lab for _, lab, _, _ in points] + ["left"],
+    )
+    for pt, (_, _, _, std) in zip(graph.points, points, strict=False):
+        pt.covariance = None if std is None else std**2 * np.eye(3)
+    return graph
+
+
+def _peg_truth(truth: GroundTruth) -> np.ndarray:
+    contact = truth.contact("P")
+    assert contact is not None
+    return contact.point
+
+
+def test_a_right_model_agrees(peg_world: tuple[SimWorld, GroundTruth]) -> None:
+    world, truth = peg_world
+    graph = _graph(
+        [("fixed", "A", ANCHOR, 5e-4), ("contact", "P", _peg_truth(truth) + 0.002, 1e-3)],
+        world.gripper_pose("left")[0],
+    )
+    checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert [(c.fixture, c.fixture_type, c.made_up, c.within) for c in checks] == [
+        ("A", "anchor", False, True),
+        ("P", "peg", False, True),
+    ]
+    assert checks[1].tolerance == pytest.approx(CONTACT_TOLERANCE + PEG_RADIUS)
+    verdict = judge_model(checks)
+    assert verdict.agrees and "P" in verdict.detail
+
+
+def test_a_wrong_trusted_estimate_disagrees(peg_world: tuple[SimWorld, GroundTruth]) -> None:
+    world, truth = peg_world
+    off = _peg_truth(truth) + np.array([PEG_RADIUS + 0.005, 0.0, 0.0])  # beyond radius + 3 mm
+    graph = _graph(
+        [("fixed", "A", ANCHOR, None), ("contact", "P", off, 1e-3)], world.gripper_pose("left")[0]
+    )
+    verdict = judge_model(check_contacts(graph, truth, "W", trusted_std=0.01))
+    assert not verdict.agrees and "P: 11.0 mm" in verdict.detail
+    # the same error with an honest, large std is not a claim the robot acts on
+    graph.points[1].covariance = 0.02**2 * np.eye(3)
+    assert judge_model(check_contacts(graph, truth, "W", trusted_std=0.01)).agrees
+
+
+def test_an_anchor_estimate_4_mm_off_disagrees(peg_world: tuple[SimWorld, GroundTruth]) -> None:
+    world, truth = peg_world
+    graph = _graph(
+        [("fixed", "A", ANCHOR + np.array([0.0, 0.004, 0.0]), 5e-4)], world.gripper_pose("left")[0]
+    )
+    (check,) = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert check.error == pytest.approx(0.004) and not check.within
+    assert not judge_model([check]).agrees
+
+
+def test_made_up_points_disagree(peg_world: tuple[SimWorld, GroundTruth]) -> None:
+    world, truth = peg_world
+    gripper = world.gripper_pose("left")[0]
+    far = np.array([0.25, 0.1, 0.12])  # on no fixture
+    graph = _graph([("fixed", "A", ANCHOR, None), ("contact", "estimated", far, None)], gripper)
+    checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert [c.made_up for c in checks] == [False, True]
+    verdict = judge_model(checks)
+    assert not verdict.agrees and "made up" in verdict.detail
+    # a point named after a fixture the cable does not touch stands for nothing
+    graph = _graph([("fixed", "A", ANCHOR, None), ("contact", "Q", far, None)], gripper)
+    checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert checks[1].made_up and "does not touch Q" in checks[1].reason
+
+
+def test_an_estimated_point_stands_for_the_contact_it_is_near(
+    peg_world: tuple[SimWorld, GroundTruth],
+) -> None:
+    world, truth = peg_world
+    gripper = world.gripper_pose("left")[0]
+    near = _peg_truth(truth) + np.array([0.0, 0.004, 0.0])
+    graph = _graph([("fixed", "A", ANCHOR, None), ("contact", "estimated", near, 1e-3)], gripper)
+    checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert checks[1].fixture == "P" and checks[1].within
+    assert judge_model(checks).agrees
+    # a second point for the same peg is made up
+    graph = _graph(
+        [
+            ("fixed", "A", ANCHOR, None),
+            ("contact", "P", _peg_truth(truth), 1e-3),
+            ("contact", "estimated", near, 1e-3),
+        ],
+        gripper,
+    )
+    checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+    assert [c.made_up for c in checks] == [False, False, True]
+
+
+def _context(world: SimWorld, truth: GroundTruth) -> PrimitiveContext:
+    graph = _graph(
+        [("fixed", "A", ANCHOR, None), ("contact", "P", _peg_truth(truth), None)],
+        world.gripper_pose("left")[0],
+    )
+    return make_context(graph, "left")
+
+
+def test_a_tension_claim_is_checked_against_the_true_tension(
+    peg_world: tuple[SimWorld, GroundTruth],
+) -> None:
+    world, truth = peg_world
+    watch = StepWatch(truth, "W", "left")
+    for _ in range(50):
+        world.step()
+        watch.tick(world.time)
+    watch.finish()
+    true = watch.mean_tension()
+    assert true is not None and true > 1.0
+    assert watch.span is not None and watch.span.fixture == "P"
+    ctx = _context(world, truth)
+    assert check_step("D", {"force": true}, True, watch, ctx, truth).agrees
+    wrong = check_step("D", {"force": 1.5 * true}, True, watch, ctx, truth)
+    assert not wrong.agrees and "true tension" in wrong.detail
+    # a failure claims nothing
+    failed = check_step("D", {"force": 1.5 * true}, False, watch, ctx, truth)
+    assert failed.agrees and "claims nothing" in failed.detail
+
+
+def test_a_rotation_claim_is_checked_against_the_angle_truly_turned() -> None:
+    """The gripper circles the anchor of a taut cable by 0.4 rad."""
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.3, 0.0, 0.3], 0.295, 200.0)
+    rest(world, 0.3)
+    truth = GroundTruth(world)
+    watch = StepWatch(truth, "W", "left", np.array([0.0, 0.0, 1.0]))
+    omega = 0.4  # rad/s about +z
+    for _ in range(round(1.0 / world.control_period)):
+        p = world.gripper_pose("left")[0]
+        twist = np.zeros(12)
+        twist[0:3] = np.cross([0.0, 0.0, omega], p - [0.0, 0.0, 0.3])
+        twist[5] = omega
+        world.set_twist(twist)
+        world.step()
+        watch.tick(world.time)
+    watch.finish()
+    p = world.gripper_pose("left")[0]
+    moved = math.atan2(p[1], p[0])
+    assert watch.turned == pytest.approx(moved, abs=0.01)
+    graph = _graph([("fixed", "A", np.array([0.0, 0.0, 0.3]), None)], p)
+    ctx = make_context(graph, "left")
+    assert check_step("I", {"angle": moved}, True, watch, ctx, truth).agrees
+    short = check_step("I", {"angle": moved + 2 * ANGLE_TOLERANCE}, True, watch, ctx, truth)
+    assert not short.agrees and "truly turned" in short.detail
+
+
+def test_coverage_counts_converged_samples_within_3_std_on_every_axis() -> None:
+    def sample(error: list[float], std: float) -> FilterSample:
+        return FilterSample(
+            0.0, 1, "A", False, np.array(error), np.zeros(3), np.full(3, std), std <= 0.01
+        )
+
+    samples = [
+        sample([0.001, 0.0, 0.0], 0.001),  # 1 std: within
+        sample([0.0, 0.0029, 0.0], 0.001),  # 2.9 std: within
+        sample([0.0, 0.0, 0.0031], 0.001),  # 3.1 std on one axis: not
+        sample([0.5, 0.0, 0.0], 0.05),  # not converged: not counted
+    ]
+    assert coverage(samples) == (3, pytest.approx(2 / 3))
+    assert coverage([]) == (0, None)
