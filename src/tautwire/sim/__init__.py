@@ -21,6 +21,7 @@ if sys.platform.startswith("linux"):
 
 from tautwire.sim.build import build_world, robot_of, truth_of, world_spec
 from tautwire.sim.diverged import SimulationDiverged
+from tautwire.sim.fault_injector import FaultInjector
 from tautwire.sim.ft_sensor import FTSensor
 from tautwire.sim.ground_truth import FixtureContact, GroundTruth
 from tautwire.sim.options import SimOptions
@@ -42,6 +43,7 @@ __all__ = [
     "CableSpec",
     "ClipSpec",
     "FTSensor",
+    "FaultInjector",
     "FixtureContact",
     "GripperSpec",
     "GroundTruth",

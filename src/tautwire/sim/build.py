@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.robot.arm import Arm
-from tautwire.scenario import Anchor, Clip, Peg, Scenario
+from tautwire.scenario import Anchor, Clip, Fault, Peg, Scenario
+from tautwire.sim.fault_injector import FaultInjector
 from tautwire.sim.ground_truth import GroundTruth
 from tautwire.sim.options import SimOptions
 from tautwire.sim.sim_robot import SimRobot
@@ -100,9 +102,31 @@ def build_world(scenario: Scenario, seed: int | None = None, **options: Any) -> 
     return SimWorld(world_spec(scenario, seed), SimOptions.from_kwargs(**options))
 
 
-def robot_of(world: SimWorld, seed: int | None = None) -> SimRobot:
-    """The :class:`tautwire.robot.Robot` view of ``world`` (what primitives get)."""
-    return SimRobot(world, seed)
+def robot_of(
+    world: SimWorld, seed: int | None = None, faults: Sequence[Fault] = ()
+) -> SimRobot | FaultInjector:
+    """The :class:`tautwire.robot.Robot` view of ``world`` (what primitives get).
+
+    Args:
+        world: The simulated world.
+        seed: Seed of the sensor noise (default: the world spec's seed).
+        faults: The scenario's ``faults:``; with any, the robot is wrapped in
+            a :class:`FaultInjector` (a ``slip`` without ``arm`` hits the
+            arm that holds the first cable and carries a sensor).
+    """
+    robot = SimRobot(world, seed)
+    if not faults:
+        return robot
+    return FaultInjector(robot, faults, _sensing_arm(world))
+
+
+def _sensing_arm(world: SimWorld) -> Arm:
+    sensors = world.spec.sensor_arms
+    for cable in world.spec.cables:
+        for hold in cable.holds:
+            if hold.arm in sensors:
+                return hold.arm
+    return sensors[0] if sensors else "left"
 
 
 def truth_of(world: SimWorld) -> GroundTruth:
