@@ -1,7 +1,9 @@
 """Entry point of the ``tautwire`` command.
 
-``main(argv) -> int`` never raises for bad input: a :class:`TautwireError`
-or a usage error becomes one clear line on stderr and a non-zero status.
+``main(argv) -> int`` never raises and never prints a traceback: a
+:class:`TautwireError` or a usage error becomes one clear line on stderr and
+status 1 or 2; any other exception (a defect) one line naming it and status
+:data:`INTERNAL_ERROR`.
 """
 
 from __future__ import annotations
@@ -13,6 +15,9 @@ import click
 
 from tautwire import __version__
 from tautwire.errors import TautwireError
+
+#: Exit status of an unexpected exception (sysexits' EX_SOFTWARE).
+INTERNAL_ERROR = 70
 
 
 @click.group(context_settings={"help_option_names": ["-h", "--help"]})
@@ -47,6 +52,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         click.echo("tautwire: interrupted", err=True)
         return 130
+    except Exception as exc:  # a defect: still one line, never a traceback
+        message = " ".join(str(exc).split()) or "no message"
+        click.echo(f"tautwire: internal error: {type(exc).__name__}: {message}", err=True)
+        return INTERNAL_ERROR
     return int(result) if isinstance(result, int) else 0
 
 

@@ -90,6 +90,12 @@ def run(
             f"contact {c.fixture}: estimate {[round(v, 4) for v in c.estimate]}, error {err_txt}"
         )
     k = result.stiffness
-    out.print(f"stiffness: estimate {k['estimate']:.1f} N/m, truth {k['truth']:.1f} N/m")
+    estimate, true = _newtons_per_metre(k["estimate"]), _newtons_per_metre(k["truth"])
+    out.print(f"stiffness: estimate {estimate}, truth {true}")
     out.print(f"sim time {result.sim_time:.1f} s in {result.wall_time:.1f} s wall")
     return 0 if result.success else 1
+
+
+def _newtons_per_metre(value: float | None) -> str:
+    """A stiffness for the table, or ``-`` where there is none."""
+    return "-" if value is None else f"{value:.1f} N/m"
