@@ -117,3 +117,63 @@ def test_fig5c_contact_change_goals(tmp_path) -> None:  # type: ignore[no-untype
     assert r["final_error"] <= 0.002 and r["final_fixture"] == "P1"
     for ext in ("png", "csv", "json"):
         assert (tmp_path / f"fig5c.{ext}").stat().st_size > 100
+
+
+@pytest.mark.slow
+def test_robustness_small_real_campaign(tmp_path, capsys: pytest.CaptureFixture[str]) -> None:  # type: ignore[no-untyped-def]
+    import csv
+    import json
+
+    args = ["--trials", "2", "--workers", "1", "--seed", "3", "--out", str(tmp_path)]
+    assert main(["reproduce", "robustness", *args, "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)  # stdout holds the JSON object only
+    assert (report["trials"], report["finished"], report["planned"]) == (2, 2, 2)
+    assert (report["backend"], report["workers"], report["seed"], report["faults"]) == (
+        "local",
+        1,
+        3,
+        True,
+    )
+    for key in ("success_rate", "clean_rate", "false_successes", "over_force_limit"):
+        assert key in report and key in report["faulty"]
+    assert set(report["contact_error"]) == {"n", "median", "p90", "max"}
+    assert set(report["k_hat_error"]) == {"n", "median", "p90", "max"}
+    assert set(report["nees"]) == {"samples", "within_3std", "coverage"}
+    assert (
+        report["faulty"]["runs"] == 2 and sum(f["runs"] for f in report["per_fault"].values()) == 2
+    )
+    assert json.loads((tmp_path / "robustness.json").read_text()) == report
+    with (tmp_path / "robustness_trials.csv").open(newline="") as fh:
+        runs = list(csv.DictReader(fh))
+    assert [(r["trial"], r["half"]) for r in runs] == [
+        ("0", "clean"),
+        ("0", "fault"),
+        ("1", "clean"),
+        ("1", "fault"),
+    ]
+    for r in runs:
+        assert r["success"] in ("True", "False") and r["fixture_type"] in ("anchor", "peg")
+        assert float(r["true_max_force"]) > 0.0  # the cable was pulled taut
+        assert (r["fault"] == "") == (r["half"] == "clean")
+    md = (tmp_path / "robustness.md").read_text()
+    assert "| no fault | 2 |" in md and "| one fault | 2 |" in md
+    for plot in ("robustness_error_vs_yaw.png", "robustness_stiffness.png"):
+        assert (tmp_path / plot).stat().st_size > 1000
+
+
+@pytest.mark.parametrize(
+    ("args", "status", "words"),
+    [
+        (["robustness", "--letters", "DI"], 1, "--letters: only for table1"),
+        (["robustness", "--only", "D:3"], 1, "trial indices"),
+        (["robustness", "--trials", "0"], 2, "--trials"),
+        (["robustness", "--address", "ray://x:10001"], 1, "--backend ray"),
+        (["fig5b", "--no-faults"], 1, "--no-faults: only for robustness"),
+    ],
+)
+def test_robustness_bad_arguments_are_one_line(
+    args: list[str], status: int, words: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["reproduce", *args]) == status
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0]

@@ -176,7 +176,7 @@ def run_scenario(
         audit.start_step(step.letter, step.params)
 
         def tick(record: TickRecord) -> None:
-            audit.tick(record.context, record.observation.time)
+            audit.tick(record.context)
             if on_tick is not None:
                 on_tick(record)
 

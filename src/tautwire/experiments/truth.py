@@ -468,7 +468,7 @@ class FilterSample:
     """The contact filter's estimate at one iteration against the truth.
 
     Attributes:
-        time: Robot time [s].
+        time: Simulator time [s].
         iteration: The filter iteration.
         fixture: The fixture the observed span leaves from (None: none).
         round: Whether the filter estimates a round contact's axis.
@@ -617,8 +617,9 @@ class RunAudit:
         self._step = (letter, dict(params))
         return watch
 
-    def tick(self, ctx: PrimitiveContext, time: float) -> None:
-        """Sample the truth after a control period ending at ``time`` [s]."""
+    def tick(self, ctx: PrimitiveContext) -> None:
+        """Sample the truth after a control period (at the simulator's time)."""
+        time = self.truth.time
         if self.watches:
             self.watches[-1].tick(time)
         self.filter.tick(ctx, time)

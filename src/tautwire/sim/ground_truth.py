@@ -160,6 +160,11 @@ class GroundTruth:
         return float(np.sum(np.linalg.norm(np.diff(p, axis=0), axis=1)))
 
     @property
+    def time(self) -> float:
+        """The simulator's time [s] since the run started (it goes on while a sensor freezes)."""
+        return self._world.time
+
+    @property
     def max_force(self) -> float:
         """Largest force [N] a gripper truly transmitted since the world's last reset.
 
