@@ -26,6 +26,7 @@ class SpringCableRobot:
         control_period: float = 0.004,
         second_contact: np.ndarray | None = None,
         switch_time: float | None = None,
+        switch_on_chord: bool = False,
     ) -> None:
         self.contact = np.asarray(contact, dtype=float)
         self.p = np.asarray(gripper, dtype=float).copy()
@@ -39,11 +40,19 @@ class SpringCableRobot:
         self.time = 0.0
         self.second = None if second_contact is None else np.asarray(second_contact, dtype=float)
         self.switch_time = switch_time
+        # a physical change: the cable comes to bear on the second point when
+        # (after switch_time) its straight span passes over it
+        self.switch_on_chord = switch_on_chord
         self.true_max_force = 0.0
 
     @property
     def control_period(self) -> float:
         return self._period
+
+    def _chord_passes(self, point: np.ndarray) -> bool:
+        ab = self.p - self.contact
+        t = float(np.clip((point - self.contact) @ ab / (ab @ ab), 0.0, 1.0))
+        return float(np.linalg.norm(point - (self.contact + t * ab))) < 2e-3
 
     def true_contact(self) -> np.ndarray:
         return self.contact
@@ -79,6 +88,7 @@ class SpringCableRobot:
             self.second is not None
             and self.switch_time is not None
             and self.time >= self.switch_time
+            and (not self.switch_on_chord or self._chord_passes(self.second))
         ):
             self.rest -= float(np.linalg.norm(self.second - self.contact))
             self.contact = self.second

@@ -41,9 +41,16 @@ def test_negative_angle_turns_the_other_way() -> None:
 
 
 def test_contact_change_adds_a_feature_point() -> None:
-    second = CONTACT + np.array([0.1, 0.1, 0.0])
+    # a peg the straight span sweeps over while circling
+    second = CONTACT + 0.15 * np.array([np.cos(1.5), np.sin(1.5), 0.0])
     robot = SpringCableRobot(
-        CONTACT, GRIPPER, 200.0, seed=6, second_contact=second, switch_time=4.0
+        CONTACT,
+        GRIPPER,
+        200.0,
+        seed=6,
+        second_contact=second,
+        switch_time=2.0,
+        switch_on_chord=True,
     )
     ctx = tensioned(robot, estimation_period=0.04)
     n_points = len(ctx.graph)

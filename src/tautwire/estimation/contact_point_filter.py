@@ -56,7 +56,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation.contact_change_detector import ContactChangeDetector
-from tautwire.estimation.contact_observation import MIN_DISTANCE
+from tautwire.estimation.contact_observation import MIN_DISTANCE, normal_plane_basis
 from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     contact_point_least_squares,
@@ -96,6 +96,26 @@ class ContactPointUpdate(NamedTuple):
     changed: bool
     nis: float | None
     used: bool
+
+
+class FilterState(NamedTuple):
+    """A copy of a filter's estimate, to go back to (see :meth:`ContactPointFilter.snapshot`).
+
+    Attributes:
+        running: Whether the filter had an estimate.
+        x: Contact position [m].  # (3,)
+        P: Its covariance [m^2].  # (3, 3)
+        radius: A round contact's radius [m], or None.
+        p_cr: cov(x, radius) [m^2].  # (3,)
+        p_rr: var(radius) [m^2].
+    """
+
+    running: bool
+    x: FloatArray
+    P: FloatArray
+    radius: float | None
+    p_cr: FloatArray
+    p_rr: float
 
 
 class ContactPointFilter:
@@ -188,6 +208,8 @@ class ContactPointFilter:
         self._p_cr: FloatArray = np.zeros(3)  # cov(x, radius) [m^2]  # (3,)
         self._p_rr = 0.0  # var(radius) [m^2]
         self.changes: list[int] = []
+        #: The estimate that the last declared change replaced (None before any).
+        self.replaced: FilterState | None = None
         self._count = 0
         # (line point, raw force, line offset variance) of each sample
         self._buffer: deque[tuple[FloatArray, FloatArray, float]] = deque(maxlen=init_max_samples)
@@ -224,6 +246,54 @@ class ContactPointFilter:
         self._buffer.clear()
         self._recent.clear()
         self.detector.reset()
+
+    def snapshot(self) -> FilterState:
+        """A copy of the current estimate (e.g. before a change is accepted)."""
+        return FilterState(
+            self.running, self.x.copy(), self.P.copy(), self.radius, self._p_cr.copy(), self._p_rr
+        )
+
+    def restore(self, state: FilterState) -> None:
+        """Go back to an estimate from :meth:`snapshot`; the gated run is forgotten."""
+        self.running = state.running
+        self.x = state.x.copy()
+        self.P = state.P.copy()
+        self.radius = state.radius
+        self._p_cr = state.p_cr.copy()
+        self._p_rr = state.p_rr
+        self._recent.clear()
+        self.detector.reset()
+
+    def line_test(
+        self, state: FilterState, p_line: ArrayLike, f_sens: ArrayLike
+    ) -> tuple[float, float]:
+        """How far a line misses an estimate: (NIS, |innovation| [m]).
+
+        The line through ``p_line`` along the weight-compensated ``f_sens``
+        against the point contact ``state`` (x, P), with this filter's
+        measurement noise: the test the change detector makes, against an
+        estimate the filter no longer holds.
+
+        Args:
+            state: The estimate to test against.
+            p_line: A point of the line [m] (gripper or wrench line point).  # (3,)
+            f_sens: The raw force [N].  # (3,)
+        """
+        p = np.asarray(p_line, dtype=float).reshape(3)
+        fx, fy, fz = (float(v) for v in np.asarray(f_sens, dtype=float).reshape(3))
+        span = (
+            self.edge_length if self.edge_length is not None else float(np.linalg.norm(p - state.x))
+        )
+        fz += 0.5 * self.mass_per_length * span * GRAVITY_ABS
+        fn = math.sqrt(fx * fx + fy * fy + fz * fz)
+        if not (fn > 0.0 and math.isfinite(fn)):
+            return math.inf, math.inf
+        H = normal_plane_basis([fx, fy, fz])  # (2, 3)
+        d = max(span, self.min_distance)
+        r2 = (d * self.force_noise / fn) ** 2 + self.position_noise**2
+        y = H @ (p - state.x)  # y = z - H x
+        S = H @ (state.P + self.Q) @ H.T + r2 * np.eye(2)  # S = H P H' + R
+        return float(y @ np.linalg.solve(S, y)), float(np.linalg.norm(y))
 
     # --------------------------------------------------------------- internals
     def _span(self, p: FloatArray) -> float:
@@ -328,6 +398,7 @@ class ContactPointFilter:
         return True
 
     def _restart(self, first_gated: int, p: FloatArray, f_chord: FloatArray) -> None:
+        self.replaced = self.snapshot()
         samples = [(pp, ff, vv) for (i, pp, ff, vv) in self._recent if i >= first_gated]
         self.restart(
             np.array([s[0] for s in samples]),

@@ -21,13 +21,18 @@ from __future__ import annotations
 
 import math
 from collections import deque
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
 
-from tautwire.errors import InvalidArgumentError
+from tautwire.errors import InvalidArgumentError, TautwireError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
+from tautwire.estimation.contact_point_filter import FilterState
+from tautwire.estimation.contact_point_least_squares import (
+    ContactPointLeastSquares,
+    direction_spread,
+)
 from tautwire.estimation.force_line import line_point
 from tautwire.estimation.round_contact import (
     DESIGN_TOLERANCE,
@@ -52,6 +57,81 @@ SAME_CONTACT = 0.03
 
 #: Largest distance [m] between a fixture's design position and a trusted estimate of it.
 DESIGN_GATE = 0.03
+
+#: A hypothesised contact change is accepted once its lines spread this far [rad].
+HYPOTHESIS_SPREAD = math.radians(5.0)
+#: ... and its batch fit's largest std is below this [m] (the tolerance a found contact has) ...
+HYPOTHESIS_STD = 0.003
+#: A point with no fixture of the design near needs its lines to spread this far [rad].
+UNKNOWN_SPREAD = math.radians(20.0)
+#: A fixed point's re-estimate may move it at most this far [m] beyond three std.
+MOVE_TOLERANCE = 0.002
+#: ... and its estimate lies at least this far [m] in front of the gripper along the cable.
+MIN_AHEAD = 0.02
+#: A candidate lies within this distance [m] (plus three std, plus a design
+#: peg's radius) of the taut span as it was when the change began.
+SEGMENT_TOLERANCE = 0.005
+#: The route through a candidate may differ from the cable's length by this
+#: much [m], plus a fraction of it, plus the stretch of the tension's change
+#: and ``ROUTE_FRICTION`` of the stretch at the tension (friction at the new
+#: contact changes the tension beyond it).
+ROUTE_TOLERANCE = 0.005
+ROUTE_RELATIVE_TOLERANCE = 0.01
+ROUTE_FRICTION = 0.4
+#: Lines in a row that fit the accepted contact again make a hypothesis spurious.
+REJECT_RUN = 5
+#: Filter iterations after which a hypothesis that neither fits nor fails is dropped.
+HYPOTHESIS_TIMEOUT = 75
+#: Dropped hypotheses in a row, with no run of ``CONFIRMED_RUN`` fitting lines
+#: between them, that mean the lines fit no contact at all (a sensor bias).
+MAX_UNRESOLVED = 3
+CONFIRMED_RUN = 25
+#: Std [m] of the line model's systematic error (the cable's bow under
+#: damping and motion, where it bears on a fixture's surface): it does not
+#: average out over samples, so it is added to the reported covariance of an
+#: estimated contact.
+SYSTEMATIC_LINE_ERROR = 1e-3
+
+
+def _nearest_on_segment(x: FloatArray, a: FloatArray, b: FloatArray) -> FloatArray:
+    """The point [m] of the segment from ``a`` to ``b`` nearest ``x``."""
+    ab = b - a
+    t = float(np.clip((x - a) @ ab / max(float(ab @ ab), 1e-18), 0.0, 1.0))
+    out: FloatArray = a + t * ab
+    return out
+
+
+class ModelInconsistentError(TautwireError):
+    """The force no longer fits the model: no contact explains the lines (cause ``sensor_bias``)."""
+
+    cause = "sensor_bias"
+
+
+@dataclass
+class ChangeHypothesis:
+    """A contact change under test (see :meth:`ModelEstimator._judge_change`).
+
+    Attributes:
+        previous: The filter's estimate before the change.
+        since: Filter iteration at which the change was declared.
+        lines: The candidate's lines: (line point [m], raw force [N]).
+        fitting: Lines in a row that fitted ``previous`` again.
+        route: Cable length [m] from the gripper to the previous contact
+            when the change was declared (the straight, taut span then).
+        start: Where the line of the taut span began just before (its
+            last line that fitted the previous contact) [m].  # (3,)
+        end: The previous contact [m].  # (3,)
+        tension: The tension [N] then.
+    """
+
+    previous: FilterState
+    since: int
+    lines: list[tuple[FloatArray, FloatArray]] = field(default_factory=list)
+    fitting: int = 0
+    route: float = math.nan
+    start: FloatArray = field(default_factory=lambda: np.zeros(3))
+    end: FloatArray = field(default_factory=lambda: np.zeros(3))
+    tension: float = 0.0
 
 
 @dataclass
@@ -148,6 +228,15 @@ class ModelEstimator:
         #: The feature point that the contact filter estimates (None: none yet).
         self._filter_point: FeaturePoint | None = None
         self._design: FloatArray | None = None  # design position of the filter's point
+        #: A contact change under test (None: the filter's point is as accepted).
+        self._pending: ChangeHypothesis | None = None
+        #: Iterations at which a hypothesised change was found spurious (the
+        #: old contact fitted again) or unresolved (no point fitted in time).
+        self.rejected: list[int] = []
+        self.unresolved: list[int] = []
+        self._consistent = 0  # iterations in a row whose line fitted the accepted contact
+        self._unresolved_run = 0
+        self._last_fitting: FloatArray | None = None  # line point of the last fused sample
 
     # ----------------------------------------------------------------- graph
     @property
@@ -190,16 +279,27 @@ class ModelEstimator:
         point = self.graph.points[c]
         if point.kind == "gripper":  # the other gripper: its position is measured
             return self._gripper_positions.get(point.label, point.position).copy()
-        kf = self.contact_filter
-        P = kf.P
+        accepted = self._accepted_estimate()
         if (
             point is self._filter_point
-            and kf.running
-            and max(P[0, 0], P[1, 1], P[2, 2]) <= self.trusted_std**2
+            and accepted is not None
+            and max(accepted.P[0, 0], accepted.P[1, 1], accepted.P[2, 2]) <= self.trusted_std**2
             and self._agrees_with_design()
         ):
-            return kf.x.copy()
+            return accepted.x.copy()
         return point.position.copy()
+
+    def _accepted_estimate(self) -> FilterState | None:
+        """The filter's estimate of its point, as accepted (None: no estimate yet).
+
+        While a contact change is a hypothesis (:class:`ChangeHypothesis`),
+        the filter estimates the candidate; the point keeps the estimate it
+        had before.
+        """
+        if self._pending is not None:
+            return self._pending.previous if self._pending.previous.running else None
+        kf = self.contact_filter
+        return kf.snapshot() if kf.running else None
 
     def _agrees_with_design(self) -> bool:
         """Whether the filter's estimate of a fixture of the board design is near its design.
@@ -212,7 +312,8 @@ class ModelEstimator:
         """
         if self._design is None:
             return True
-        return norm3(self.contact_filter.x - self._design) <= DESIGN_GATE
+        accepted = self._accepted_estimate()
+        return accepted is not None and norm3(accepted.x - self._design) <= DESIGN_GATE
 
     def _track(self, c: int | None) -> bool:
         """Point the contact filter at point ``c``; False if ``c`` needs no filter.
@@ -227,6 +328,7 @@ class ModelEstimator:
         point = self.graph.points[c]
         if point is not self._filter_point:
             self.contact_filter.reset()
+            self._pending = None
             self._filter_point = point
             self._design = None if point.label == "estimated" else point.position.copy()
             self._sum_p[:] = 0.0
@@ -316,26 +418,241 @@ class ModelEstimator:
             result = kf.update(self._on_axis(p_mean, f_mean), f_mean, torque=tau_mean)
         self.iterations += 1
         self._recent.append((p_line, f_mean))
-        if result.changed and result.estimate is not None:
-            self.changes.append(self.iterations - 1)
-            added = self._add_contact(result.estimate, p_line)
-            peg = self._round_contact()
-            if peg is not None:
-                # a peg: the gated lines were fitted as if through a point;
-                # fit them again shifted onto its axis
-                recent = list(self._recent)
-                kf.restart(
-                    [self._on_axis(p, f) for p, f in recent],
-                    [f for _, f in recent],
-                    radius=(peg[2], RADIUS_STD),
-                )
-            return added
+        if self._pending is not None:
+            return self._judge_change(p_line, f_mean)
+        if result.changed and result.estimate is not None and kf.replaced is not None:
+            # a hypothesis until it is checked: the point keeps its estimate
+            previous = kf.replaced
+            old = previous.x if previous.running else self._filter_point_position()
+            self._pending = ChangeHypothesis(previous, self.iterations - 1)
+            self._pending.lines.extend(self._recent)
+            self._pending.route = norm3(p_line - old)
+            start = self._last_fitting if self._last_fitting is not None else p_line
+            self._pending.start, self._pending.end = start.copy(), old.copy()
+            self._pending.tension = self.state.tension if self.state is not None else 0.0
+            return False
+        if result.used:
+            self._last_fitting = p_line
+            self._consistent += 1
+            if self._consistent >= CONFIRMED_RUN:
+                self._unresolved_run = 0
         if result.nis is None:
             return False
         # a line that misses the contact may meet a peg of the design; one
         # that still fits it may already rest on a peg in between
         tolerance = TANGENT_TOLERANCE if result.used else DESIGN_TOLERANCE
         return self._peg_change(p_line, f_mean, tolerance)
+
+    # ------------------------------------------------------- change hypotheses
+    def _judge_change(self, p_line: FloatArray, f: FloatArray) -> bool:
+        """Test the pending change on one more line; True if the graph changed.
+
+        The change is spurious when ``REJECT_RUN`` lines in a row fit the
+        accepted contact again (a spike, a shake): back to it. It is
+        accepted once the candidate's lines spread ``HYPOTHESIS_SPREAD``, its
+        std is below ``trusted_std`` and it lies in front of the gripper
+        along the cable, no further than the cable reaches; then, near a
+        point the model already knows (within ``SAME_CONTACT``), that point
+        is re-estimated, else a feature point is added. Unresolved after
+        ``HYPOTHESIS_TIMEOUT`` iterations: back to the accepted contact; a
+        run of ``MAX_UNRESOLVED`` such hypotheses with no accepted contact
+        fitting in between raises :class:`ModelInconsistentError`.
+        """
+        h = self._pending
+        assert h is not None
+        kf = self.contact_filter
+        h.lines.append((p_line, f))
+        nis, miss = kf.line_test(h.previous, p_line, f)
+        fits_old = h.previous.running and (
+            nis <= kf.detector.threshold or miss <= kf.detector.min_innovation
+        )
+        h.fitting = h.fitting + 1 if fits_old else 0
+        if h.fitting >= REJECT_RUN:
+            self._drop_hypothesis(self.rejected)
+            return False
+        candidate = self._candidate(p_line, f, h)
+        if candidate is not None:
+            accepted = self._accept(p_line, candidate, h)
+            if accepted is not None:
+                return accepted
+        if self.iterations - h.since > HYPOTHESIS_TIMEOUT:
+            self._drop_hypothesis(self.unresolved)
+            self._unresolved_run += 1
+            if self._unresolved_run >= MAX_UNRESOLVED:
+                raise ModelInconsistentError(
+                    f"for {self._unresolved_run} times {HYPOTHESIS_TIMEOUT} filter iterations the"
+                    " force lines fitted neither the known contact nor any new point: a drifting"
+                    " force-torque sensor bias, or a contact the model cannot describe"
+                )
+        return False
+
+    def _drop_hypothesis(self, record: list[int]) -> None:
+        assert self._pending is not None
+        self.contact_filter.restore(self._pending.previous)
+        self._pending = None
+        self._consistent = 0
+        record.append(self.iterations - 1)
+
+    def _candidate(
+        self, p_line: FloatArray, f: FloatArray, h: ChangeHypothesis
+    ) -> ContactPointLeastSquares | None:
+        """The candidate contact from the hypothesis' own lines, if it passes every check.
+
+        A batch least squares over the lines since the change, without a
+        prior: its lines must spread ``HYPOTHESIS_SPREAD``, fit one point
+        (chi-square within three of its standard deviations of the degrees of
+        freedom), to within ``HYPOTHESIS_STD``, in front of the gripper, on
+        the taut span as it was when the change began and without changing
+        the cable's length.
+        """
+        kf = self.contact_filter
+        ps = np.array([p for p, _ in h.lines])
+        fs = np.array([q for _, q in h.lines])
+        if direction_spread(fs / np.linalg.norm(fs, axis=1)[:, None]) < HYPOTHESIS_SPREAD:
+            return None
+        try:
+            fit = kf.batch(ps, fs)
+        except InvalidArgumentError:
+            return None
+        dof = max(2 * len(ps) - 3, 1)
+        if fit.chi2 > dof + 3.0 * math.sqrt(2.0 * dof):
+            return None
+        if float(np.sqrt(np.max(np.diag(fit.covariance)))) > HYPOTHESIS_STD:
+            return None
+        x = fit.estimate
+        ahead = float((x - p_line) @ f) / norm3(f)
+        g, c = self.gripper_index, self.contact_index
+        reach = math.inf
+        if c is not None:
+            s = self.graph.arc_lengths()
+            reach = abs(float(s[g] - s[c])) + SAME_CONTACT
+        if not MIN_AHEAD <= ahead <= reach:
+            return None
+        # a new contact came to bear on the straight taut span: it lies on
+        # that span as it was when the change began (a biased sensor's lines
+        # meet beside it or beyond the contact)
+        P = fit.covariance
+        peg = max(
+            (
+                radius
+                for axis_point, radius in self.round_fixtures.values()
+                if float(np.linalg.norm((x - axis_point)[:2])) <= radius + 0.02
+            ),
+            default=0.0,
+        )
+        nearest = _nearest_on_segment(x, h.start, h.end)
+        aside = norm3(x - nearest)
+        n = (x - nearest) / max(aside, 1e-12)
+        if aside > SEGMENT_TOLERANCE + 3.0 * math.sqrt(float(n @ P @ n)) + peg:
+            return None
+        # the cable does not change length: under the same tension the route
+        # through the candidate is as long as the straight span was (give or
+        # take the stretch of the tension's change, and of the friction at
+        # the new contact)
+        k = max(self.elasticity.k_trusted, 1e-6)
+        tension = self.state.tension if self.state is not None else h.tension
+        stretch = abs(tension - h.tension) / k + ROUTE_FRICTION * tension / k
+        route = norm3(x - p_line) + norm3(h.end - x)
+        grad = (x - p_line) / max(norm3(x - p_line), 1e-12) + (x - h.end) / max(
+            norm3(x - h.end), 1e-12
+        )  # d route / d x
+        tolerance = ROUTE_TOLERANCE + ROUTE_RELATIVE_TOLERANCE * h.route + stretch
+        tolerance += 3.0 * math.sqrt(float(grad @ P @ grad))
+        return fit if abs(route - h.route) <= tolerance else None
+
+    def _filter_point_position(self) -> FloatArray:
+        point = self._filter_point
+        return point.position.copy() if point is not None else np.zeros(3)
+
+    def _accept(
+        self, p_line: FloatArray, fit: ContactPointLeastSquares, h: ChangeHypothesis
+    ) -> bool | None:
+        """Accept the candidate if the model allows it; True if the graph changed.
+
+        Near a point the model knows (within ``SAME_CONTACT``), that point is
+        re-estimated rather than a new one made up: the filter's own point
+        (a fixed fixture does not move: only within three std of its estimate
+        and ``MOVE_TOLERANCE``), or one further along the cable (within
+        ``DESIGN_GATE`` of where the model has it: the cable left the points
+        in between, which are removed). Else a feature point is added: near a
+        peg of the board design, labelled with it; with no design near, only
+        on stronger evidence (``UNKNOWN_SPREAD`` of lines, and the fit of the
+        first half of them agreeing with the whole within ``HYPOTHESIS_STD``).
+        None: not acceptable yet (keep testing).
+        """
+        g = self.gripper_index
+        c = self._contact_index(g)
+        if c is None or c > g:
+            return None
+        x = fit.estimate
+        for i in range(c, -1, -1):
+            point = self.graph.points[i]
+            if not point.is_constrained or point.kind == "gripper":
+                continue
+            if point is self._filter_point:
+                known = h.previous.x if h.previous.running else point.position
+                if norm3(x - known) >= SAME_CONTACT:
+                    continue
+                allowed = MOVE_TOLERANCE
+                if h.previous.running:
+                    allowed += 3.0 * math.sqrt(float(np.max(np.linalg.eigvalsh(h.previous.P))))
+                if self._design is not None and norm3(x - self._design) > DESIGN_GATE:
+                    return None
+                if norm3(x - known) > allowed:
+                    return None  # a fixed point does not move: the lines are wrong
+            elif norm3(x - point.position) >= SAME_CONTACT:
+                continue
+            self._take(fit, h)
+            removed = [q for q in self.graph.points[i + 1 : c + 1] if q.kind == "contact"]
+            for q in removed:
+                self.graph.remove_point(self.graph.points.index(q))
+            if point is not self._filter_point:
+                self._filter_point = point
+                self._design = None if point.label == "estimated" else point.position.copy()
+            return bool(removed)
+        designed = any(
+            float(np.linalg.norm((x - axis_point)[:2])) <= radius + 0.02
+            for axis_point, radius in self.round_fixtures.values()
+        )
+        if not designed:
+            fs = np.array([q for _, q in h.lines])
+            if direction_spread(fs / np.linalg.norm(fs, axis=1)[:, None]) < UNKNOWN_SPREAD:
+                return None
+            half = len(h.lines) // 2
+            try:
+                early = self.contact_filter.batch(
+                    np.array([p for p, _ in h.lines[:half]]), fs[:half]
+                )
+            except InvalidArgumentError:
+                return None
+            if norm3(early.estimate - x) > HYPOTHESIS_STD:
+                return None  # the meeting point moves: no fixed contact
+        self._take(fit, h)
+        kf = self.contact_filter
+        added = self._add_contact(kf.x.copy(), p_line)
+        peg = self._round_contact()
+        if added and peg is not None:
+            # a peg: the lines were fitted as if through a point; fit them
+            # again shifted onto its axis
+            recent = list(self._recent)
+            kf.restart(
+                [self._on_axis(p, f) for p, f in recent],
+                [f for _, f in recent],
+                radius=(peg[2], RADIUS_STD),
+            )
+        return added
+
+    def _take(self, fit: ContactPointLeastSquares, h: ChangeHypothesis) -> None:
+        """The filter goes on from the accepted candidate's own lines."""
+        self.contact_filter.restart(
+            [p for p, _ in h.lines],
+            [q for _, q in h.lines],
+            prior_mean=fit.estimate,
+            prior_covariance=fit.covariance * len(h.lines),
+        )
+        self._pending = None
+        self._consistent = 0
+        self.changes.append(self.iterations - 1)
 
     def _peg_change(self, p_g: FloatArray, f: FloatArray, tolerance: float) -> bool:
         """Declare a change at once if a line is tangent to a peg of the board design.
@@ -423,15 +740,15 @@ class ModelEstimator:
                 constraints[i] = obs.gripper("left" if pt.label == "left" else "right").position
             elif pt.kind in ("fixed", "contact"):
                 constraints[i] = pt.position
-        kf = self.contact_filter
+        accepted = self._accepted_estimate()
         if (
-            kf.running
+            accepted is not None
             and c is not None
             and self.graph.points[c] is self._filter_point
             and self._agrees_with_design()
         ):
-            constraints[c] = kf.x.copy()
-            self.graph.points[c].covariance = kf.P.copy()
+            constraints[c] = accepted.x.copy()
+            self.graph.points[c].covariance = accepted.P + SYSTEMATIC_LINE_ERROR**2 * np.eye(3)
         update_by_constraints(self.graph, constraints)
         for pt in self.graph.points:
             if pt.kind == "gripper":

@@ -1,0 +1,110 @@
+"""A contact change is a hypothesis until it is checked (ModelEstimator)."""
+
+import math
+from collections.abc import Callable
+
+import numpy as np
+import pytest
+
+from tautwire.primitives import RotateAroundFeaturePoint, SingleArmTension
+from tautwire.primitives.model_estimator import ModelInconsistentError
+from tautwire.robot import Observation, Wrench
+from tautwire.tasks import run_step
+from tests.primitives.conftest import CONTACT, GRIPPER, context
+from tests.primitives.spring_robot import SpringCableRobot
+
+Disturbance = Callable[[float, np.ndarray, np.ndarray], np.ndarray]
+
+
+class DisturbedRobot(SpringCableRobot):
+    """The spring cable whose measured force f becomes disturbance(t, p, f) [N]."""
+
+    def __init__(self, disturbance: Disturbance, **kwargs: object) -> None:
+        super().__init__(CONTACT, GRIPPER, 200.0, **kwargs)  # type: ignore[arg-type]
+        self.disturbance = disturbance
+
+    def observe(self) -> Observation:
+        obs = super().observe()
+        w = obs.wrenches[0]
+        f = self.disturbance(self.time, self.p, w.force)
+        return Observation(obs.time, obs.left, obs.right, (Wrench("left", f, w.torque),))
+
+
+def _rotate(robot: SpringCableRobot, angle: float = 2 * math.pi):  # type: ignore[no-untyped-def]
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    n_points = len(ctx.graph)
+    report = run_step(robot, RotateAroundFeaturePoint("left", angle, speed=0.5), ctx)
+    return ctx, report, n_points
+
+
+def _contact_error(ctx) -> float:  # type: ignore[no-untyped-def]
+    c = ctx.estimator.contact_index
+    return float(np.linalg.norm(ctx.graph.points[c].position - CONTACT))
+
+
+def test_a_shake_is_not_a_new_contact() -> None:
+    # 1 N sideways for 0.3 s while circling: the lines miss the contact, then fit it again
+    def shake(t: float, p: np.ndarray, f: np.ndarray) -> np.ndarray:
+        return f + (np.array([0.0, 0.0, 1.0]) if 9.0 <= t < 9.3 else np.zeros(3))
+
+    ctx, report, n_points = _rotate(DisturbedRobot(shake, seed=11))
+    assert report.success
+    assert len(ctx.graph) == n_points  # no made-up point
+    assert ctx.estimator.rejected  # the hypothesis was raised and found spurious
+    assert _contact_error(ctx) < 0.003
+
+
+def test_lines_that_meet_behind_the_gripper_are_never_a_contact() -> None:
+    # from 8 s on the force points away from a point outside the gripper's
+    # circle: lines that all meet behind the gripper, which no taut cable makes
+    behind = CONTACT + np.array([0.0, 0.6, 0.0])
+
+    def push(t: float, p: np.ndarray, f: np.ndarray) -> np.ndarray:
+        if t < 8.0:
+            return f
+        away = p - behind
+        return np.linalg.norm(f) * away / np.linalg.norm(away)
+
+    robot = DisturbedRobot(push, seed=12)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    n_points = len(ctx.graph)
+    report = run_step(robot, RotateAroundFeaturePoint("left", 2 * math.pi, speed=0.5), ctx)
+    assert len(ctx.graph) == n_points
+    assert not report.success or _contact_error(ctx) < 0.003
+
+
+def test_a_candidate_near_a_known_point_is_no_new_point() -> None:
+    # lines that meet 1.5 cm from the trusted anchor: not a new point (it is
+    # near a known one)
+    second = CONTACT + np.array([0.0, 0.015, 0.0])
+    robot = SpringCableRobot(
+        CONTACT, GRIPPER, 200.0, seed=13, second_contact=second, switch_time=6.0
+    )
+    ctx, report, n_points = _rotate(robot)
+    assert len(ctx.graph) == n_points
+    assert report.success or report.cause == "sensor_bias"
+
+
+def test_a_bias_drift_keeps_the_contact_or_ends_with_sensor_bias() -> None:
+    # 0.5 N of bias, ramped in over 2 s from 8 s on
+    def bias(t: float, p: np.ndarray, f: np.ndarray) -> np.ndarray:
+        return f + min(max(t - 8.0, 0.0) / 2.0, 1.0) * np.array([0.5, 0.0, 0.0])
+
+    robot = DisturbedRobot(bias, seed=14)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    n_points = len(ctx.graph)
+    report = run_step(robot, RotateAroundFeaturePoint("left", 4 * math.pi, speed=0.5), ctx)
+    assert len(ctx.graph) == n_points  # no made-up contact
+    if report.success:
+        assert _contact_error(ctx) < 0.003
+    else:
+        assert report.cause == "sensor_bias"
+
+
+def test_inconsistent_error_names_sensor_bias() -> None:
+    assert ModelInconsistentError.cause == "sensor_bias"
+    with pytest.raises(ModelInconsistentError):
+        raise ModelInconsistentError("x")
