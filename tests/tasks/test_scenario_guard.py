@@ -8,10 +8,16 @@ import numpy as np
 import pytest
 
 from tautwire.model import GRAVITY
-from tautwire.scenario import load_scenario
+from tautwire.scenario import WORKSPACE, load_scenario
 from tautwire.sim.build import build_world, robot_of
 from tautwire.tasks.robot_guard import TARE_SAMPLES, spike_bound
-from tautwire.tasks.scenario_guard import TARE_LOAD_FACTOR, rest_loads, scenario_guard
+from tautwire.tasks.scenario_guard import (
+    REACH,
+    REACH_MARGIN,
+    TARE_LOAD_FACTOR,
+    rest_loads,
+    scenario_guard,
+)
 
 SCENARIOS = Path(__file__).parents[2] / "scenarios"
 
@@ -47,3 +53,12 @@ def test_the_guard_takes_the_scenarios_limits_noise_and_workspace() -> None:
         guard.hold()
     assert fresh == [False] * TARE_SAMPLES + [True, True]
     assert not np.any(guard.offsets["left"])  # a clean sensor: nothing to tare
+
+
+def test_the_reach_is_the_placement_box_grown_sideways_and_up_but_not_below_the_board() -> None:
+    assert REACH.lower == (
+        WORKSPACE.lower[0] - REACH_MARGIN,
+        WORKSPACE.lower[1] - REACH_MARGIN,
+        0.0,
+    )
+    assert REACH.upper == tuple(v + REACH_MARGIN for v in WORKSPACE.upper)
