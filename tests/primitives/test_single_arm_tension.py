@@ -3,6 +3,7 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives import SingleArmTension
+from tautwire.robot import Command
 from tautwire.tasks import TickRecord, run_step
 from tests.primitives.conftest import CONTACT, GRIPPER, context
 from tests.primitives.spring_robot import SpringCableRobot
@@ -87,3 +88,78 @@ def test_deterministic() -> None:
         reports.append(robot.p.copy())
     assert reports[0] == reports[2]
     assert np.array_equal(reports[1], reports[3])
+
+
+class SlippingCableRobot(SpringCableRobot):
+    """From ``slip_time`` on, the cable slides through the fingers above ``friction`` [N]."""
+
+    def __init__(self, *args: object, slip_time: float, friction: float = 0.2, **kw: object):
+        super().__init__(*args, **kw)  # type: ignore[arg-type]
+        self.slip_time = slip_time
+        self.friction = friction
+
+    def act(self, command: Command) -> None:
+        super().act(command)
+        if self.time >= self.slip_time and self.tension() > self.friction:
+            distance = float(np.linalg.norm(self.contact - self.p))
+            self.rest = distance - self.friction / self.k  # the cable slid through
+
+
+@pytest.mark.parametrize("k", [10.0, 1500.0])
+def test_knows_the_stiffness_at_the_end(k: float) -> None:
+    # a generic 100 N/m guess, ten times off either way, and a noisy sensor
+    robot = SpringCableRobot(CONTACT, GRIPPER, k, slack=0.005, noise=0.1, seed=11)
+    ctx = context(k_initial=100.0, force_noise=0.1)
+    step = SingleArmTension("left", 1.5)
+    report = run_step(robot, step, ctx)
+    assert report.success, report
+    assert ctx.estimator.elasticity.k_hat == pytest.approx(k, rel=0.05)
+    assert step.learn_time is not None and step.learn_time >= step.min_learn_time
+    assert robot.true_max_force < 0.8 * 15.0
+
+
+def test_learning_swing_is_larger_and_ends_in_the_hold_phase() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 500.0, slack=0.005, seed=12)
+    ctx = context(k_initial=100.0)
+    step = SingleArmTension("left", 2.0)
+    set_points: dict[str, list[float]] = {"approach": [], "learning": [], "hold": []}
+
+    def watch(rec: TickRecord) -> None:
+        set_points[step.phase].append(step.set_point(step.elapsed))
+
+    report = run_step(robot, step, ctx, on_tick=watch)
+    assert report.success
+    learning = np.asarray(set_points["learning"])
+    hold = np.asarray(set_points["hold"])
+    assert learning.max() == pytest.approx(2.0 * (1.0 + step.learn_excitation), rel=0.01)
+    assert np.abs(hold - 2.0).max() <= 2.0 * step.excitation + 1e-9
+    assert len(hold) * robot.control_period >= step.hold_time
+
+
+def test_the_swing_keeps_under_the_force_limit() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 300.0, slack=0.005, seed=13)
+    ctx = context(k_initial=100.0, force_limit=12.0)
+    step = SingleArmTension("left", 9.0)
+    report = run_step(robot, step, ctx)
+    assert report.success, report
+    assert robot.true_max_force < 12.0
+
+
+def test_a_slip_fails_within_the_travel_bound() -> None:
+    # taut at 1 s, then the cable slides through the fingers: D must not pull on and on
+    robot = SlippingCableRobot(CONTACT, GRIPPER, 500.0, slack=0.005, seed=14, slip_time=1.0)
+    ctx = context(k_initial=100.0)
+    report = run_step(robot, SingleArmTension("left", 3.0), ctx)
+    assert report.outcome == "failure" and report.cause == "slipped", report
+    route = float(np.linalg.norm(robot.p - CONTACT))
+    rest = float(np.linalg.norm(GRIPPER - CONTACT))
+    # at most the rest length plus the stretch at the force limit plus the margins
+    assert route <= rest * 1.05 + 0.03 + 15.0 / 100.0 + 0.01
+    assert report.sim_time < 5.0
+
+
+def test_a_soft_cable_on_a_stiff_guess_is_not_taken_for_a_slip() -> None:
+    # 10 N/m at 4 N stretches 0.4 m, more than the guess's 15 N / 100 N/m
+    robot = SpringCableRobot(CONTACT, GRIPPER, 10.0, slack=0.01, seed=15)
+    report = run_step(robot, SingleArmTension("left", 4.0), context(k_initial=100.0))
+    assert report.success, report

@@ -8,15 +8,20 @@ import numpy as np
 
 from tautwire.control import DualPose
 from tautwire.errors import InvalidArgumentError
+from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.tension_judge import TensionJudge
+from tautwire.primitives.travel_bound import TravelBound
 from tautwire.robot import Arm, Command, Observation
 
 #: Time constant [s] of the tension average that success is judged by.
 JUDGE_TIME = 0.1
+#: The learning swing keeps the tension below this fraction of the force limit.
+FORCE_LIMIT_RESERVE = 0.8
 
 
 class SingleArmTension(Primitive):
@@ -29,31 +34,47 @@ class SingleArmTension(Primitive):
     directions hold the start pose. k_hat is the online elasticity estimate
     and need not be right at the start.
 
-    Learning k (equ:spring_measurement). Two things make a cable's stiffness
-    observable from the wrist alone, and D provides both:
+    Learning k (equ:spring_measurement). D runs in three phases:
 
-    * The elasticity estimate learns only once the tension has first come
-      within ``tolerance`` of ``force``. While the cable is pulled from slack,
-      the chord lengthens mostly because the sag straightens out and the
-      cable swings; those samples would fit a far softer spring (a 1000 N/m
-      cable read as 250 N/m in Fig. 5a).
-    * Once there, the set point is modulated by a slow sine,
-      f_d (1 + ``excitation`` sin(2 pi t / ``excitation_period``)): a
-      persistent excitation. Holding a constant tension, a stiff cable moves
-      the gripper by micrometres, which the force noise and the cable's
-      transverse vibrations swamp; the paper notes that k estimates improve
-      with larger oscillation. The default, half the tolerance (5 %), swings
-      a 1000 N/m cable at 2 N by +-0.1 mm, enough for k to within a few per
-      cent in 2-4 s, and stays well inside the success band. 0 turns it off.
+    1. *Approach*: pull the cable taut to ``force``. The elasticity estimate
+       learns only once the tension has first come within ``tolerance`` of
+       ``force``: while the cable is pulled from slack, the chord lengthens
+       mostly because the sag straightens out and the cable swings; those
+       samples would fit a far softer spring (a 1000 N/m cable read as
+       250 N/m in Fig. 5a).
+    2. *Learning*: the set point swings by ``learn_excitation`` (default
+       +-20 %) of ``force``, f_d (1 + a sin(2 pi t / ``excitation_period``)),
+       until k is known to ``stiffness_std`` (relative std of the fit,
+       default 3 %) and at least ``min_learn_time`` has passed, or for
+       ``learn_timeout`` at most. A persistent excitation: holding a
+       constant tension, a stiff cable moves the gripper by micrometres,
+       which the force noise and the cable's vibrations swamp. The swing's
+       length amplitude a f_d / k_trusted is kept under ``max_swing`` (a soft
+       cable needs no long stroke) and its peak under 80 % of the force
+       limit. The swing changes amplitude only where the sine crosses zero.
+    3. *Hold*: the swing drops to ``excitation`` (default half the
+       tolerance, 5 %), which keeps k tracked and stays well inside the
+       success band; success once the tension has stayed in the band for
+       ``hold_time``.
 
     The controller's gain uses the latest k_hat known to 20 %
     (:attr:`ElasticityEstimator.k_trusted`; before that, the prior), so a
     fit from the first few samples cannot make it unstable.
 
+    Travel bound: the route from the gripper back to the fixed point
+    behind it (through the contact estimates) may be at most its rest
+    length plus the stretch at the force limit plus a margin
+    (:class:`~tautwire.primitives.travel_bound.TravelBound`). Further, an
+    intact cable would have reached the force limit: it has slipped
+    through the fingers, and D fails at once rather than drive the gripper
+    out of the workspace.
+
     Success: the tension, averaged over ``JUDGE_TIME`` (0.1 s: the sensor's
     noise is not the tension leaving the band), stays within ``tolerance`` of
-    ``force`` for ``hold_time``. Failure: ``no_contact`` if the gripper travels
-    ``max_travel`` without the cable becoming taut; ``timeout``.
+    ``force`` for ``hold_time`` in the hold phase. Failure: ``no_contact`` if
+    the gripper travels ``max_travel`` (or past the travel bound) without the
+    cable becoming taut; ``slipped`` past the travel bound after it was
+    taut; ``timeout``.
 
     Args:
         arm: The gripper that holds the cable (it carries the FT sensor).
@@ -64,9 +85,17 @@ class SingleArmTension(Primitive):
             then judge success by the last ``hold_time``.
         max_travel: Longest distance [m] to pull a slack cable.
         timeout: Longest run time [s].
-        excitation: Amplitude of the set point's modulation, a fraction of
-            ``force`` in [0, ``tolerance``); default half the tolerance.
+        excitation: Amplitude of the set point's modulation outside the
+            learning phase, a fraction of ``force`` in [0, ``tolerance``);
+            default half the tolerance.
         excitation_period: Period [s] of the modulation, > 0.
+        learn_excitation: Amplitude of the learning swing, a fraction of
+            ``force`` in [0, 1); 0 skips the learning phase.
+        stiffness_std: Relative std of k that ends the learning phase.
+        min_learn_time: Shortest learning phase [s].
+        learn_timeout: Longest learning phase [s]; then D holds with the k
+            it has.
+        max_swing: Largest length amplitude [m] of the learning swing.
     """
 
     name = "single_arm_tension"
@@ -80,9 +109,14 @@ class SingleArmTension(Primitive):
         hold_time: float = 0.5,
         duration: float | None = None,
         max_travel: float = 0.3,
-        timeout: float = 10.0,
+        timeout: float = 30.0,
         excitation: float | None = None,
         excitation_period: float = 2.0,
+        learn_excitation: float = 0.2,
+        stiffness_std: float = 0.03,
+        min_learn_time: float = 2.0,
+        learn_timeout: float = 15.0,
+        max_swing: float = 0.02,
     ) -> None:
         super().__init__(timeout if duration is None else max(timeout, duration + 1.0))
         if arm not in ("left", "right"):
@@ -97,6 +131,19 @@ class SingleArmTension(Primitive):
             )
         if not (excitation_period > 0.0 and math.isfinite(excitation_period)):
             raise InvalidArgumentError(f"excitation_period must be > 0 s, got {excitation_period}")
+        if not 0.0 <= learn_excitation < 1.0:
+            raise InvalidArgumentError(
+                f"learn_excitation must be in [0, 1), got {learn_excitation}"
+            )
+        if not (stiffness_std > 0.0 and math.isfinite(stiffness_std)):
+            raise InvalidArgumentError(f"stiffness_std must be > 0, got {stiffness_std}")
+        if not (0.0 <= min_learn_time <= learn_timeout and math.isfinite(learn_timeout)):
+            raise InvalidArgumentError(
+                "need 0 <= min_learn_time <= learn_timeout < inf s,"
+                f" got {min_learn_time} and {learn_timeout}"
+            )
+        if not (max_swing > 0.0 and math.isfinite(max_swing)):
+            raise InvalidArgumentError(f"max_swing must be > 0 m, got {max_swing}")
         self.arm: Arm = arm
         self.force = float(force)
         self.tolerance = float(tolerance)
@@ -105,21 +152,42 @@ class SingleArmTension(Primitive):
         self.max_travel = float(max_travel)
         self.excitation = float(excitation)
         self.excitation_period = float(excitation_period)
-        self._learning = False
+        self.learn_excitation = float(learn_excitation)
+        self.stiffness_std = float(stiffness_std)
+        self.min_learn_time = float(min_learn_time)
+        self.learn_timeout = float(learn_timeout)
+        self.max_swing = float(max_swing)
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
+        self._travel = TravelBound(15.0)
         self._desired: DualPose | None = None
         self._start_position = np.zeros(3)
         self._ever_taut = False
+        self._phase = "approach"
+        self._learn_start: float | None = None
+        self._half_period = -1
+        self._amplitude = self.excitation
+        #: Simulated time [s] the learning phase took (None before it ended).
+        self.learn_time: float | None = None
+
+    @property
+    def phase(self) -> str:
+        """``approach``, ``learning`` or ``hold``."""
+        return self._phase
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Remember the start; reset the success criteria."""
         ctx.estimator.learn_elasticity = False  # until the tension is near f_d
         ctx.estimator.rotation = None
-        self._learning = False
         self._desired = current_pose(obs)
         self._start_position = obs.gripper(self.arm).position.copy()
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
+        self._travel = TravelBound(ctx.limits.max_force)
         self._ever_taut = False
+        self._phase = "approach"
+        self._learn_start = None
+        self._half_period = -1
+        self._amplitude = self.excitation
+        self.learn_time = None
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -127,39 +195,118 @@ class SingleArmTension(Primitive):
         assert self._desired is not None
         self._ever_taut |= state.taut
         band = max(self.tolerance * self.force, 0.05)
-        if not self._learning and state.taut and abs(state.tension - self.force) <= band:
-            self._learning = True
+        if self._phase == "approach" and state.taut and abs(state.tension - self.force) <= band:
+            self._phase = "learning" if self.learn_excitation > 0.0 else "hold"
+            self._learn_start = self.elapsed
             ctx.estimator.learn_elasticity = True
+        self._schedule(ctx)
         f_d = self.set_point(self.elapsed)
         twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state)
-        self._judge(obs, state.tension)
+        self._judge(obs, state, ctx)
         if self.outcome.done and self.outcome.status == "success":
             ctx.tension = self.force
         return Command(twist)
 
     def set_point(self, elapsed: float) -> float:
-        """Desired tension [N] ``elapsed`` s after the start, with the excitation."""
+        """Desired tension [N] ``elapsed`` s after the start, with the present swing."""
         phase = 2.0 * math.pi * elapsed / self.excitation_period
-        return self.force * (1.0 + self.excitation * math.sin(phase))
+        return self.force * (1.0 + self._amplitude * math.sin(phase))
 
-    def _judge(self, obs: Observation, tension: float) -> None:
-        held = self._judge_tension.update(obs.time, tension)
+    def _schedule(self, ctx: PrimitiveContext) -> None:
+        """At each zero of the sine: end the learning phase once k is known; pick the swing."""
+        half = math.floor(2.0 * self.elapsed / self.excitation_period)
+        if half == self._half_period:
+            return
+        self._half_period = half
+        elasticity = ctx.estimator.elasticity
+        if self._phase == "learning" and self._learn_start is not None:
+            learnt = self.elapsed - self._learn_start
+            known = elasticity.is_ready(self.stiffness_std)
+            # with a fixed duration, the last hold_time is judged after a small swing
+            late = self.duration is not None and (
+                self.elapsed + 0.5 * self.excitation_period + self.hold_time >= self.duration
+            )
+            if (known and learnt >= self.min_learn_time) or learnt >= self.learn_timeout or late:
+                self._phase = "hold"
+                self.learn_time = learnt
+                self._judge_tension.reset()
+        if self._phase != "learning":
+            self._amplitude = self.excitation
+            return
+        # the peak stays under the force limit's reserve; a soft cable needs no long stroke
+        by_limit = FORCE_LIMIT_RESERVE * ctx.limits.max_force / self.force - 1.0
+        by_stroke = self.max_swing * elasticity.k_trusted / self.force
+        self._amplitude = max(self.excitation, min(self.learn_excitation, by_limit, by_stroke))
+
+    def _route(
+        self, ctx: PrimitiveContext, state: TensionState
+    ) -> tuple[float, float, float] | None:
+        """(route [m], its rest length [m], the edge's rest length [m]) to the fixed point behind.
+
+        The route runs from the gripper through the contact estimate and the
+        model's points to the nearest point that holds the cable (an anchor
+        or clip, the other gripper); None if there is none (a free end).
+        """
+        est = ctx.estimator
+        graph = est.graph
+        g = est.gripper_index
+        c = est.contact_index
+        if c is None:
+            return None
+        step = -1 if c < g else 1
+        points = graph.points
+        s = graph.arc_lengths()
+        route = state.span
+        i = c
+        while points[i].kind not in ("fixed", "gripper"):
+            j = i + step
+            if not 0 <= j < len(points):
+                return None
+            route += norm3(points[j].position - points[i].position)
+            i = j
+        return route, abs(float(s[g] - s[i])), abs(float(s[g] - s[c]))
+
+    def _judge(self, obs: Observation, state: TensionState, ctx: PrimitiveContext) -> None:
+        held = self._judge_tension.update(obs.time, state.tension)
         tension = self._judge_tension.smoothed or 0.0
+        holding = self._phase == "hold"
         if self.duration is not None:
             if self.elapsed >= self.duration:
                 self.outcome = (
-                    Outcome.success(f"tension {tension:.2f} N")
-                    if held
+                    Outcome.success(f"tension {tension:.2f} N{self._k_note(ctx)}")
+                    if held and holding
                     else Outcome.failure(
-                        "timeout", f"tension {tension:.2f} N, set {self.force:g} N"
+                        "timeout", f"tension {tension:.2f} N, set {self.force:g} N ({self._phase})"
                     )
                 )
             return
-        if held:
-            self.outcome = Outcome.success(f"tension {tension:.2f} N held {self.hold_time:g} s")
+        if held and holding:
+            self.outcome = Outcome.success(
+                f"tension {tension:.2f} N held {self.hold_time:g} s{self._k_note(ctx)}"
+            )
             return
         travel = float(np.linalg.norm(obs.gripper(self.arm).position - self._start_position))
         if not self._ever_taut and travel > self.max_travel:
             self.outcome = Outcome.failure(
                 "no_contact", f"pulled {travel:.2f} m and the cable never became taut"
             )
+            return
+        route = self._route(ctx, state)
+        if route is None:
+            return
+        length, rest, edge = route
+        k_route = ctx.estimator.elasticity.k_trusted * edge / max(rest, 1e-9)
+        if self._travel.update(length, rest, tension, k_route):
+            cause = "slipped" if self._ever_taut else "no_contact"
+            self.outcome = Outcome.failure(
+                cause,
+                f"the route to the fixed point is {length:.3f} m, longer than its rest length"
+                f" {rest:.3f} m and the stretch at the force limit allow"
+                f" ({self._travel.allowed:.3f} m at k {self._travel.stiffness(k_route):.3g} N/m):"
+                " the cable is no longer held where the model says",
+            )
+
+    def _k_note(self, ctx: PrimitiveContext) -> str:
+        e = ctx.estimator.elasticity
+        rel = e.std / e.k_hat if e.k_hat > 0.0 else math.inf
+        return f"; k_hat {e.k_hat:.4g} N/m (std {100.0 * rel:.2g} %)"

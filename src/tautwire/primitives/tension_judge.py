@@ -33,6 +33,10 @@ class TensionJudge:
         """The low-passed tension [N] (None before the first sample)."""
         return self._low_pass.value
 
+    def reset(self) -> None:
+        """Start the hold afresh (the low-passed tension is kept)."""
+        self._within_since = None
+
     def update(self, time: float, tension: float) -> bool:
         """Add the tension [N] measured at ``time`` [s]; True once it has been held."""
         smoothed = self._low_pass.update(time, tension)

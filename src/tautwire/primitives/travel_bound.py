@@ -1,0 +1,99 @@
+"""How far a gripper may pull the cable it holds: its slack plus its stretch at the force limit.
+
+The cable between the gripper and the nearest point behind it that holds it
+fixed (an anchor, a clip, the other gripper) has a rest length l_0 in the
+path graph. Pulled taut, the route there (gripper to contact to ... to the
+fixed point) is at most l_0 plus the stretch that the force limit F_max
+allows, F_max / k. A gripper further away than that cannot still hold an
+intact cable: the cable has slipped through the fingers (or the model of
+the route is wrong), and a tensioning primitive that keeps pulling only
+drives the gripper out of the workspace.
+
+The stiffness k of that bound errs on the soft side (a larger bound):
+
+* the route's stiffness from the elasticity estimate, k_trusted l_e / l_0
+  (the estimate is of the gripper's edge, rest length l_e; the whole route
+  has the same EA over a longer length), and
+* the secant T / (l - l_0) at the largest tension seen so far: an intact
+  cable's tension never falls while the gripper pulls further, so the
+  stretch per newton seen at that tension bounds it from then on. Before
+  the stiffness fit converges this is what keeps a soft cable (which
+  stretches far) from tripping the bound on a stiff prior; after a slip the
+  peak stays where it was, so the bound stays too.
+
+A margin (``margin`` + ``relative_margin`` l_0) covers what the model does
+not know exactly: a contact estimate a few cm off the design, where the
+gripper holds the cable, and the sag the chord still has.
+"""
+
+from __future__ import annotations
+
+import math
+
+from tautwire.errors import InvalidArgumentError
+
+
+class TravelBound:
+    """The longest route [m] from a gripper to the fixed point behind it.
+
+    Args:
+        force_limit: F_max [N], the robot's force limit.
+        margin: Absolute margin [m].
+        relative_margin: Margin as a fraction of the rest length l_0.
+        taut_tension: Least tension [N] at which a stretch is taken as the
+            secant's reference.
+    """
+
+    def __init__(
+        self,
+        force_limit: float,
+        margin: float = 0.03,
+        relative_margin: float = 0.05,
+        taut_tension: float = 0.3,
+    ) -> None:
+        if not (force_limit > 0.0 and math.isfinite(force_limit)):
+            raise InvalidArgumentError(f"force_limit must be > 0 N, got {force_limit}")
+        if not (margin >= 0.0 and math.isfinite(margin)):
+            raise InvalidArgumentError(f"margin must be >= 0 m, got {margin}")
+        if not (relative_margin >= 0.0 and math.isfinite(relative_margin)):
+            raise InvalidArgumentError(f"relative_margin must be >= 0, got {relative_margin}")
+        self.force_limit = float(force_limit)
+        self.margin = float(margin)
+        self.relative_margin = float(relative_margin)
+        self.taut_tension = float(taut_tension)
+        self.reset()
+
+    def reset(self) -> None:
+        """Forget the peak tension (a new route, e.g. after a regrasp)."""
+        self._peak_tension = 0.0
+        self._peak_stretch = 0.0
+        #: The latest bound [m] (inf before the first update).
+        self.allowed = math.inf
+
+    def stiffness(self, k_route: float) -> float:
+        """The stiffness [N/m] of the bound: the softer of ``k_route`` and the peak's secant."""
+        k = float(k_route)
+        if self._peak_tension >= self.taut_tension and self._peak_stretch > 0.0:
+            k = min(k, self._peak_tension / self._peak_stretch)
+        return k
+
+    def update(self, route: float, rest_length: float, tension: float, k_route: float) -> bool:
+        """Add the current route; True if it is longer than an intact cable allows.
+
+        Args:
+            route: Length [m] of the modelled route from the gripper to the
+                fixed point (through the contact estimates).
+            rest_length: Its rest length l_0 [m] in the path graph.
+            tension: Tension [N] of the gripper's edge (low-passed).
+            k_route: The route's stiffness [N/m] from the elasticity
+                estimate (k_trusted l_e / l_0).
+        """
+        if not all(math.isfinite(v) for v in (route, rest_length, tension, k_route)):
+            return False
+        stretch = route - rest_length
+        if tension > self._peak_tension:
+            self._peak_tension, self._peak_stretch = tension, stretch
+        k = self.stiffness(k_route)
+        extra = self.force_limit / k if k > 0.0 else math.inf
+        self.allowed = rest_length * (1.0 + self.relative_margin) + self.margin + extra
+        return route > self.allowed
