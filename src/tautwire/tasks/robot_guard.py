@@ -48,7 +48,6 @@ from numpy.typing import ArrayLike, NDArray
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.outcome import CAUSES, Outcome
 from tautwire.robot import (
-    ARMS,
     Command,
     GripperCommand,
     GripperState,
@@ -121,18 +120,26 @@ def _cause_of(exc: BaseException) -> str:
 
 
 def _finite(obs: Observation) -> bool:
-    """Whether every number of ``obs`` is finite."""
-    parts = [
-        obs.left.position,
-        obs.left.orientation,
-        obs.right.position,
-        obs.right.orientation,
-        [obs.time, obs.left.opening, obs.left.grip_force, obs.right.opening, obs.right.grip_force],
-    ]
+    """Whether every number of ``obs`` is finite.
+
+    A sum of numbers is finite exactly when all of them are (NaN and inf
+    propagate; finite magnitudes near 1e308 that overflow count as
+    unusable too), which is much cheaper than testing each array.
+    """
+    total = (
+        float(obs.time)
+        + float(obs.left.opening)
+        + float(obs.left.grip_force)
+        + float(obs.right.opening)
+        + float(obs.right.grip_force)
+        + sum(obs.left.position.tolist())
+        + sum(obs.left.orientation.tolist())
+        + sum(obs.right.position.tolist())
+        + sum(obs.right.orientation.tolist())
+    )
     for w in obs.wrenches:
-        parts.append(w.force)
-        parts.append(w.torque)
-    return bool(np.all(np.isfinite(np.concatenate([np.asarray(p, dtype=float) for p in parts]))))
+        total += sum(w.force.tolist()) + sum(w.torque.tolist())
+    return math.isfinite(total)
 
 
 def _repeated(obs: Observation, previous: Observation) -> bool:
@@ -140,7 +147,7 @@ def _repeated(obs: Observation, previous: Observation) -> bool:
     if not obs.wrenches or len(obs.wrenches) != len(previous.wrenches):
         return False
     return all(
-        np.array_equal(a.force, b.force) and np.array_equal(a.torque, b.torque)
+        a.force.tolist() == b.force.tolist() and a.torque.tolist() == b.torque.tolist()
         for a, b in zip(obs.wrenches, previous.wrenches, strict=True)
     )
 
@@ -192,8 +199,8 @@ class RobotGuard:
         self._frozen_check = force_noise > 0.0
         self._bound = spike_bound(force_limit, force_noise, max_linear_speed, self._dt)
         self._workspace = workspace
-        self._lower = None if workspace is None else np.asarray(workspace.lower, dtype=float)
-        self._upper = None if workspace is None else np.asarray(workspace.upper, dtype=float)
+        self._lower = None if workspace is None else tuple(float(v) for v in workspace.lower)
+        self._upper = None if workspace is None else tuple(float(v) for v in workspace.upper)
         loads = dict(expected_load or {})
         self._tares: dict[str, SensorTare] = {}
         self._tare_samples = int(tare_samples)
@@ -281,7 +288,9 @@ class RobotGuard:
     @property
     def offsets(self) -> dict[str, FloatArray]:
         """Force offset [N] removed from each arm's sensor by the tare (empty before it)."""
-        return {arm: v.copy() for arm, v in self._offsets.items()}
+        if not all(t.done for t in self._tares.values()):
+            return {}
+        return {arm: t.offset for arm, t in self._tares.items()}
 
     @property
     def events(self) -> dict[str, int]:
@@ -425,12 +434,12 @@ class RobotGuard:
             if w.arm in self._tares:
                 self._tares[w.arm].add(w.force)
         if all(t.done for t in self._tares.values()):
-            self._offsets = {arm: t.offset for arm, t in self._tares.items()}
+            self._offsets = {arm: t.offset for arm, t in self._tares.items() if np.any(t.offset)}
             self._good = self._tared(raw)
         return False
 
     def _tared(self, raw: Observation) -> Observation:
-        if not any(np.any(v) for v in self._offsets.values()):
+        if not self._offsets:
             return raw
         wrenches = tuple(
             Wrench(w.arm, w.force - self._offsets[w.arm], w.torque) if w.arm in self._offsets else w
@@ -440,12 +449,13 @@ class RobotGuard:
 
     def _jumped(self, obs: Observation) -> bool:
         assert self._good is not None
-        good = {w.arm: w.force for w in self._good.wrenches}
+        good = {w.arm: w.force.tolist() for w in self._good.wrenches}
+        bound2 = self._bound * self._bound
         for w in obs.wrenches:
             before = good.get(w.arm)
             if before is not None:
-                d = w.force - before
-                if math.sqrt(float(d @ d)) > self._bound:
+                x, y, z = w.force.tolist()
+                if (x - before[0]) ** 2 + (y - before[1]) ** 2 + (z - before[2]) ** 2 > bound2:
                     return True
         return False
 
@@ -453,30 +463,34 @@ class RobotGuard:
         """``command`` with every linear velocity that leaves the workspace stopped at it."""
         if self._lower is None or self._upper is None or self._good is None:
             return command
-        twist = command.twist.copy()
+        dt = self._dt
+        v = command.twist.tolist()
         pushed = False
-        for k, arm in enumerate(ARMS):
-            p = self._good.gripper(arm).position
-            v = twist[6 * k : 6 * k + 3]
-            low = np.minimum(0.0, (self._lower - p) / self._dt)
-            high = np.maximum(0.0, (self._upper - p) / self._dt)
-            bounded = np.clip(v, low, high)
-            if np.any(np.abs(bounded - v) > _EPS):
-                pushed = True
-                twist[6 * k : 6 * k + 3] = bounded
+        for k, p in enumerate((self._good.left.position, self._good.right.position)):
+            for axis, (p_i, lo, hi) in enumerate(
+                zip(p.tolist(), self._lower, self._upper, strict=True)
+            ):
+                i = 6 * k + axis
+                after = p_i + v[i] * dt
+                if after > hi and v[i] > 0.0:
+                    v[i] = max(0.0, (hi - p_i) / dt)
+                    pushed = True
+                elif after < lo and v[i] < 0.0:
+                    v[i] = min(0.0, (lo - p_i) / dt)
+                    pushed = True
         if not pushed:
             self._pushing = 0
             return command
         self._events["workspace_stop"] += 1
         self._pushing += 1
-        bounded_command = Command(twist, command.left, command.right)
-        if self._pushing * self._dt > PUSH_TIME + _EPS:
+        bounded_command = Command(np.array(v), command.left, command.right)
+        if self._pushing * dt > PUSH_TIME + _EPS:
             assert self._workspace is not None
             self._grippers = (command.left, command.right)
             self._fail(
                 "workspace",
                 f"the primitive kept driving a gripper out of the workspace"
-                f" ({self._workspace.describe()}) for {self._pushing * self._dt:.3f} s",
+                f" ({self._workspace.describe()}) for {self._pushing * dt:.3f} s",
             )
         return bounded_command
 
