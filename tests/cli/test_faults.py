@@ -59,3 +59,16 @@ def test_a_stiffness_that_was_not_estimated_is_a_dash() -> None:
 
     assert _newtons_per_metre(None) == "-"
     assert _newtons_per_metre(199.26) == "199.3 N/m"
+
+
+def test_validate_lists_the_faults(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    text = TENSION_ONLY + (
+        "faults:\n  - {type: nan, at: 1.0}\n  - {type: spike, at: 2, force: [0, 0, 40]}\n"
+    )
+    assert main(["validate", str(_write(tmp_path, text))]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[-3:] == [
+        "faults (simulation only): 2",
+        "  nan at 1 s",
+        "  spike at 2 s (force=[0, 0, 40])",
+    ]

@@ -14,7 +14,8 @@ def summarise(scenario: Scenario) -> list[str]:
         scenario: a validated scenario.
 
     Returns:
-        Lines of text: name, fixtures, cables with their routes, task steps.
+        Lines of text: name, fixtures, cables with their routes, task
+        steps, and the faults to inject, if any.
     """
     fixtures = scenario.board.fixtures
     lines = [
@@ -34,7 +35,22 @@ def summarise(scenario: Scenario) -> list[str]:
     for n, step in enumerate(scenario.task, start=1):
         params = ", ".join(f"{k}={_value(v)}" for k, v in step.params.items())
         lines.append(f"  {n}. {step.letter} {step.primitive}({params})")
+    if scenario.faults:
+        lines.append(f"faults (simulation only): {len(scenario.faults)}")
+        for fault in scenario.faults:
+            fields = fault.model_dump(exclude={"type", "at"}, exclude_none=True)
+            details = ", ".join(f"{k}={_value(_plain(v))}" for k, v in fields.items())
+            lines.append(f"  {fault.type} at {fault.at:g} s" + (f" ({details})" if details else ""))
     return lines
+
+
+def _plain(value: object) -> float | str | list[float]:
+    """A fault field as a parameter value (tuples as lists)."""
+    if isinstance(value, tuple):
+        return [float(c) for c in value]
+    if isinstance(value, int | float):
+        return float(value)
+    return str(value)
 
 
 def _value(value: float | str | list[float]) -> str:
