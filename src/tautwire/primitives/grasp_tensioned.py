@@ -9,7 +9,7 @@ import numpy as np
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.interpolation import lerp
-from tautwire.model.quaternion import orientation_along
+from tautwire.model.quaternion import turn_x_onto_line
 from tautwire.model.tension import G as GRAVITY
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
@@ -99,8 +99,15 @@ class GraspTensioned(Primitive):
                 f"at = {self.at:g} m is not on the taut edge [{lo:.3f}, {hi:.3f}] m",
             )
 
-    def _goal(self, ctx: PrimitiveContext, tension: float) -> tuple[FloatArray, FloatArray]:
-        """The interpolated feature point at ``at``: position [m] and grasp orientation."""
+    def _goal(
+        self, ctx: PrimitiveContext, tension: float, orientation: FloatArray
+    ) -> tuple[FloatArray, FloatArray]:
+        """The interpolated feature point at ``at``: position [m] and grasp orientation.
+
+        The orientation is the grasping gripper's ``orientation`` turned by
+        the shortest arc that lays its tool x-axis, either sense, along the
+        cable (the fingers hold it as well either way).
+        """
         graph = ctx.graph
         i, delta = graph.locate(self.at)
         a, b = graph.points[i].position, graph.points[i + 1].position
@@ -110,7 +117,7 @@ class GraspTensioned(Primitive):
             p[2] -= graph.mass_per_length * GRAVITY * span**2 * delta * (1 - delta) / (2 * tension)
         along = b - a
         along[2] = 0.0
-        return p, orientation_along(along)
+        return p, turn_x_onto_line(orientation, along)
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Keep the tension, approach, descend, close, confirm, record."""
@@ -121,7 +128,7 @@ class GraspTensioned(Primitive):
         sensing = ctx.estimator.arm
         tension = self._tension.update(obs.time, state.tension)  # the fingers shake the cable
         me = obs.gripper(self.arm)
-        goal, q = self._goal(ctx, state.tension)
+        goal, q = self._goal(ctx, state.tension, me.orientation)
         self.goal = goal
         fingers = GripperCommand("open")
         if self.phase == "approach":

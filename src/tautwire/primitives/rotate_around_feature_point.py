@@ -12,10 +12,12 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
+from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
 from tautwire.robot import Arm, Command, Observation
 
 
@@ -39,7 +41,9 @@ class RotateAroundFeaturePoint(Primitive):
     Success: the cable's direction (from the contact to the gripper, as the
     force measures it) has turned ``angle`` about ``axis``. Failure:
     ``slipped`` if the tension stays below a fifth of its set point for
-    ``slack_time`` after having been taut; ``timeout``.
+    ``slack_time`` after having been taut, or once the route to the fixed
+    point is longer than an intact cable allows
+    (:class:`~tautwire.primitives.travel_bound.TravelBound`); ``timeout``.
 
     Args:
         arm: The gripper that holds the cable (it carries the FT sensor).
@@ -104,6 +108,7 @@ class RotateAroundFeaturePoint(Primitive):
         self._slack.reset()
         self._ever_taut = False
         self._axis = ToolAxis()
+        self._travel = TravelBound(ctx.limits.max_force)
         if self._default_timeout:
             # the nominal time at the speed the gripper's speed limit allows on this circle
             contact = ctx.estimator.contact_position()
@@ -139,7 +144,23 @@ class RotateAroundFeaturePoint(Primitive):
         desired = with_pose(current_pose(obs), self.arm, Pose(target, q_target))
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
+        self._check_travel(ctx, state)
         return Command(twist)
+
+    def _check_travel(self, ctx: PrimitiveContext, state: TensionState) -> None:
+        """Fail with ``slipped`` once the route is longer than an intact cable allows."""
+        route = route_to_fixed_point(ctx.estimator, state)
+        if self.outcome.done or route is None:
+            return
+        k_route = route.stiffness(ctx.estimator.elasticity.k_trusted)
+        if self._travel.update(route.length, route.rest_length, state.tension, k_route):
+            self.outcome = Outcome.failure(
+                "slipped",
+                f"the gripper is {route.length:.3f} m along the cable from the fixed point, more"
+                f" than its rest length {route.rest_length:.3f} m and the stretch at the force"
+                f" limit allow ({self._travel.allowed:.3f} m): the cable is no longer held"
+                " where the model says",
+            )
 
     def _radius(self, p_gripper: np.ndarray, contact: np.ndarray) -> float:
         """Radius [m] of the circle about ``contact``'s axis through ``p_gripper``."""

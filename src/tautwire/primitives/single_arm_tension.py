@@ -8,14 +8,13 @@ import numpy as np
 
 from tautwire.control import DualPose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.tension_judge import TensionJudge
-from tautwire.primitives.travel_bound import TravelBound
+from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
 from tautwire.robot import Arm, Command, Observation
 
 #: Time constant [s] of the tension average that success is judged by.
@@ -45,7 +44,8 @@ class SingleArmTension(Primitive):
     2. *Learning*: the set point swings by ``learn_excitation`` (default
        +-20 %) of ``force``, f_d (1 + a sin(2 pi t / ``excitation_period``)),
        until k is known to ``stiffness_std`` (relative std of the fit,
-       default 3 %) and at least ``min_learn_time`` has passed, or for
+       default 3 %), k_hat has moved by at most twice that over the last
+       period, and at least ``min_learn_time`` has passed; or for
        ``learn_timeout`` at most. A persistent excitation: holding a
        constant tension, a stiff cable moves the gripper by micrometres,
        which the force noise and the cable's vibrations swamp. The swing's
@@ -166,6 +166,7 @@ class SingleArmTension(Primitive):
         self._learn_start: float | None = None
         self._half_period = -1
         self._amplitude = self.excitation
+        self._k_history: list[float] = []  # k_hat at the zeros of the learning swing
         #: Simulated time [s] the learning phase took (None before it ended).
         self.learn_time: float | None = None
 
@@ -187,6 +188,7 @@ class SingleArmTension(Primitive):
         self._learn_start = None
         self._half_period = -1
         self._amplitude = self.excitation
+        self._k_history = []
         self.learn_time = None
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
@@ -221,7 +223,16 @@ class SingleArmTension(Primitive):
         elasticity = ctx.estimator.elasticity
         if self._phase == "learning" and self._learn_start is not None:
             learnt = self.elapsed - self._learn_start
-            known = elasticity.is_ready(self.stiffness_std)
+            self._k_history.append(elasticity.k_hat)
+            # known to stiffness_std by its noise, and no longer moving: a
+            # period ago it read the same (a cable still settling makes a
+            # confident fit wander)
+            k_now, k_before = self._k_history[-1], self._k_history[-3:][0]
+            steady = (
+                len(self._k_history) >= 3
+                and abs(k_now - k_before) <= 2.0 * self.stiffness_std * k_now
+            )
+            known = steady and elasticity.is_ready(self.stiffness_std)
             # with a fixed duration, the last hold_time is judged after a small swing
             late = self.duration is not None and (
                 self.elapsed + 0.5 * self.excitation_period + self.hold_time >= self.duration
@@ -237,34 +248,6 @@ class SingleArmTension(Primitive):
         by_limit = FORCE_LIMIT_RESERVE * ctx.limits.max_force / self.force - 1.0
         by_stroke = self.max_swing * elasticity.k_trusted / self.force
         self._amplitude = max(self.excitation, min(self.learn_excitation, by_limit, by_stroke))
-
-    def _route(
-        self, ctx: PrimitiveContext, state: TensionState
-    ) -> tuple[float, float, float] | None:
-        """(route [m], its rest length [m], the edge's rest length [m]) to the fixed point behind.
-
-        The route runs from the gripper through the contact estimate and the
-        model's points to the nearest point that holds the cable (an anchor
-        or clip, the other gripper); None if there is none (a free end).
-        """
-        est = ctx.estimator
-        graph = est.graph
-        g = est.gripper_index
-        c = est.contact_index
-        if c is None:
-            return None
-        step = -1 if c < g else 1
-        points = graph.points
-        s = graph.arc_lengths()
-        route = state.span
-        i = c
-        while points[i].kind not in ("fixed", "gripper"):
-            j = i + step
-            if not 0 <= j < len(points):
-                return None
-            route += norm3(points[j].position - points[i].position)
-            i = j
-        return route, abs(float(s[g] - s[i])), abs(float(s[g] - s[c]))
 
     def _judge(self, obs: Observation, state: TensionState, ctx: PrimitiveContext) -> None:
         held = self._judge_tension.update(obs.time, state.tension)
@@ -291,11 +274,11 @@ class SingleArmTension(Primitive):
                 "no_contact", f"pulled {travel:.2f} m and the cable never became taut"
             )
             return
-        route = self._route(ctx, state)
+        route = route_to_fixed_point(ctx.estimator, state)
         if route is None:
             return
-        length, rest, edge = route
-        k_route = ctx.estimator.elasticity.k_trusted * edge / max(rest, 1e-9)
+        length, rest = route.length, route.rest_length
+        k_route = route.stiffness(ctx.estimator.elasticity.k_trusted)
         if self._travel.update(length, rest, tension, k_route):
             cause = "slipped" if self._ever_taut else "no_contact"
             self.outcome = Outcome.failure(

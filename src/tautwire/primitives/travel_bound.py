@@ -29,8 +29,11 @@ gripper holds the cable, and the sag the chord still has.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.model.vector3 import norm3
+from tautwire.primitives.model_estimator import ModelEstimator, TensionState
 
 
 class TravelBound:
@@ -97,3 +100,53 @@ class TravelBound:
         extra = self.force_limit / k if k > 0.0 else math.inf
         self.allowed = rest_length * (1.0 + self.relative_margin) + self.margin + extra
         return route > self.allowed
+
+
+class Route(NamedTuple):
+    """The modelled route from a gripper to the fixed point that holds its cable.
+
+    Attributes:
+        length: Its length [m] now (gripper to contact estimate to ... to
+            the fixed point).
+        rest_length: Its rest length l_0 [m] in the path graph.
+        edge_rest_length: The rest length [m] of the gripper's own edge.
+    """
+
+    length: float
+    rest_length: float
+    edge_rest_length: float
+
+    def stiffness(self, k_edge: float) -> float:
+        """The route's stiffness [N/m] from the edge's: the same EA over l_0."""
+        return k_edge * self.edge_rest_length / max(self.rest_length, 1e-9)
+
+
+def route_to_fixed_point(estimator: ModelEstimator, state: TensionState) -> Route | None:
+    """The route from the sensing gripper to the nearest point that holds the cable fixed.
+
+    It runs from the gripper through the contact estimate and the model's
+    points to an anchor or clip (``fixed``) or the other gripper; None if
+    there is none (a free end). ``state`` (the latest update's) gives the
+    gripper's span when the contact is the one it was measured against; a
+    contact the update has just changed is measured afresh.
+    """
+    graph = estimator.graph
+    g = estimator.gripper_index
+    c = estimator.contact_index
+    if c is None:
+        return None
+    step = -1 if c < g else 1
+    points = graph.points
+    s = graph.arc_lengths()
+    contact = estimator.contact_position()
+    length = state.span
+    if contact is not None and norm3(contact - state.contact) > 1e-9:
+        length = norm3(points[g].position - contact)
+    i = c
+    while points[i].kind not in ("fixed", "gripper"):
+        j = i + step
+        if not 0 <= j < len(points):
+            return None
+        length += norm3(points[j].position - points[i].position)
+        i = j
+    return Route(length, abs(float(s[g] - s[i])), abs(float(s[g] - s[c])))
