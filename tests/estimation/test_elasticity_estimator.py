@@ -131,3 +131,40 @@ def test_reset_with_a_new_prior_is_clamped() -> None:
     assert est.k_hat == 500.0
     est.reset()
     assert est.k_hat == 500.0  # the prior stays
+
+
+def _creeping(k: float, seed: int, creep: float, bias_rate: float = 0.0):  # type: ignore[no-untyped-def]
+    """A 0.5 Hz stretch (1 N swing) of a cable whose rest length creeps by ``creep`` [m/s].
+
+    The chord grows by the creep while the tension swings about a constant
+    mean (a cable settling round a peg); ``bias_rate`` [N/s] drifts the
+    measured tension at constant length (a sensor bias).
+    """
+    rng = np.random.default_rng(seed)
+    t = np.arange(1500) / 250.0  # 6 s
+    stretch_ = 0.5 / k * np.sin(2.0 * np.pi * 0.5 * t)
+    length = 0.3 + creep * t + stretch_
+    tension = 3.0 + k * stretch_ + bias_rate * t + rng.normal(0.0, 0.05, t.size)
+    return tension, length
+
+
+@pytest.mark.parametrize(("creep", "bias_rate"), [(3e-4, 0.0), (0.0, 0.1)])
+def test_a_slow_drift_is_not_taken_for_stiffness(creep: float, bias_rate: float) -> None:
+    k = 1000.0
+    errors = {True: [], False: []}
+    for drift in (True, False):
+        for seed in range(10):
+            est = ElasticityEstimator(drift=drift)
+            for f, l_ in zip(*_creeping(k, seed, creep, bias_rate), strict=True):
+                est.update(f, l_)
+            errors[drift].append(abs(est.k_hat / k - 1.0))
+    assert max(errors[True]) < 0.05
+    assert np.median(errors[False]) > 0.1  # the affine fit reads the drift as stiffness
+
+
+def test_drift_rate_is_estimated() -> None:
+    est = ElasticityEstimator()
+    for f, l_ in zip(*_creeping(500.0, 3, 0.0, bias_rate=0.25), strict=True):
+        est.update(f, l_)
+    # 0.25 N/s is 0.05 N per 0.2 s window
+    assert est.drift_rate == pytest.approx(0.05, rel=0.2)

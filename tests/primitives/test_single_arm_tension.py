@@ -163,3 +163,28 @@ def test_a_soft_cable_on_a_stiff_guess_is_not_taken_for_a_slip() -> None:
     robot = SpringCableRobot(CONTACT, GRIPPER, 10.0, slack=0.01, seed=15)
     report = run_step(robot, SingleArmTension("left", 4.0), context(k_initial=100.0))
     assert report.success, report
+
+
+class CreepingCableRobot(SpringCableRobot):
+    """The rest length grows by ``creep`` [m/s] until ``until`` [s] (settling round a peg)."""
+
+    def __init__(self, *args: object, creep: float, until: float, **kw: object):
+        super().__init__(*args, **kw)  # type: ignore[arg-type]
+        self.creep = creep
+        self.until = until
+
+    def act(self, command: Command) -> None:
+        super().act(command)
+        if self.time < self.until:
+            self.rest += self.creep * self.control_period
+
+
+def test_a_creeping_cable_is_learnt_once_it_has_settled() -> None:
+    # 0.5 mm/s of creep for 4 s on a 1000 N/m cable: 0.5 N/s that no spring makes
+    robot = CreepingCableRobot(
+        CONTACT, GRIPPER, 1000.0, slack=0.005, seed=16, creep=5e-4, until=4.0
+    )
+    ctx = context(k_initial=100.0)
+    report = run_step(robot, SingleArmTension("left", 2.0), ctx)
+    assert report.success, report
+    assert ctx.estimator.elasticity.k_hat == pytest.approx(1000.0, rel=0.1)

@@ -18,14 +18,27 @@ length noise       differences, RLS (0.999)    affine RLS (this class)
 =================  ==========================  ===========================
 
 tautwire keeps the paper's idea, no dependency on the rest length, with the
-statistically sound affine model
+statistically sound affine model, plus a slow drift:
 
-    |f| = k (l - l_ref) + c,      phi = [l - l_ref, 1],  theta = [k, c],
+    |f| = k (l - l_ref) + c + d (t - t_ref),
+    phi = [l - l_ref, 1, t - t_ref],  theta = [k, c, d],
 
-where c absorbs the unknown rest length (c = k (l_ref - l_rest)) and l_ref is
-the first length seen (centring for conditioning). Differencing this model
-gives back equ:spring_measurement exactly; fitting it directly uses every
-sample's full length excursion instead of one step's.
+where c absorbs the unknown rest length (c = k (l_ref - l_rest)), l_ref is
+the first length seen (centring for conditioning) and d [N per window] a
+drift of the tension at constant length. Differencing the model without
+drift gives back equ:spring_measurement exactly; fitting it directly uses
+every sample's full length excursion instead of one step's.
+
+Drift. Whatever changes the tension-length relation slowly, and not with
+the excitation, biases a fit without it: a cable still creeping round a
+peg after it was pulled taut (its length grows while the tension swings
+about a constant mean), a sag still settling, a sensor bias drifting. In
+primitive D on a 0.61 m, 678 N/m cable round a peg (the bench's seed 109),
+the chord crept 2 mm in the first 2.5 s of the swing: the fit without
+drift read 299 N/m where the simulated world presented 618 N/m. t_ref
+moves to each fused window (c absorbs d times the step), so phi's third
+entry is always 0 and the drift enters only through P; time counts
+windows, used or skipped.
 
 Window means. The fit sees the mean tension and length of every ``window``
 samples (default 50: 0.2 s at the 250 Hz control rate), not each sample. A
@@ -47,6 +60,7 @@ Recursive least squares with exponential forgetting lambda per window
 tracks a slowly changing k or rest length (memory about 1 / (1 - lambda)
 accepted windows: 20, i.e. 4 s, by default):
 
+    theta = T theta,  P = T P T'     (t_ref to the new window, T = I + Dt e_c e_d')
     e = |f| - phi' theta
     K = P phi / (lambda sigma_f^2 / window + phi' P phi)
     theta = theta + K e
@@ -67,6 +81,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from tautwire.errors import InvalidArgumentError
 
 #: Relative std of k below which k_hat becomes :attr:`ElasticityEstimator.k_trusted`.
@@ -86,6 +102,7 @@ class ElasticityEstimator:
             last used window for a window to be used (excitation guard).
         window: Number of samples whose mean tension and length make one
             least-squares sample, >= 1.
+        drift: Whether to fit the drift d (else d = 0: the affine model).
     """
 
     def __init__(
@@ -97,6 +114,7 @@ class ElasticityEstimator:
         k_range: tuple[float, float] = (1.0, 1e5),
         min_length_change: float = 1e-5,
         window: int = 50,
+        drift: bool = True,
     ) -> None:
         k_min, k_max = (float(v) for v in k_range)
         if not (force_noise > 0.0 and math.isfinite(force_noise)):
@@ -121,6 +139,7 @@ class ElasticityEstimator:
         self.k_max = k_max
         self.min_length_change = float(min_length_change)
         self.window = window
+        self.drift = bool(drift)
         self._r = self.force_noise * self.force_noise / window  # noise of a window's mean
         self._k0 = float(k_initial)
         self._k0_var = float(k_initial_std) ** 2
@@ -138,19 +157,21 @@ class ElasticityEstimator:
             if not math.isfinite(k_initial):
                 raise InvalidArgumentError(f"k_initial must be finite, got {k_initial}")
             self._k0 = min(max(float(k_initial), self.k_min), self.k_max)
-        self._k = self._k0
-        self._c = 0.0
-        # P = diag(var_k, var_c); c is unknown until the first sample.
-        self._p00 = self._k0_var
-        self._p01 = 0.0
-        self._p11 = 1e6
+        self._theta = np.array([self._k0, 0.0, 0.0])  # [k, c, d]
+        # P = diag(var_k, var_c, var_d); c and d are unknown until the data come
+        self._P = np.diag([self._k0_var, 1e6, 1e2 if self.drift else 0.0])
         self._l_ref: float | None = None
         self._l_last = 0.0
+        self._gap = 0  # windows since the last fused one
         self._sum_f = 0.0
         self._sum_l = 0.0
         self._m = 0
         self.samples_used = 0
         self._k_trusted = self._k0
+
+    @property
+    def _k(self) -> float:
+        return float(self._theta[0])
 
     @property
     def k_hat(self) -> float:
@@ -177,17 +198,22 @@ class ElasticityEstimator:
     @property
     def variance(self) -> float:
         """Variance [(N/m)^2] of k (P[0, 0])."""
-        return self._p00
+        return float(self._P[0, 0])
 
     @property
     def std(self) -> float:
         """Std [N/m] of k."""
-        return math.sqrt(max(self._p00, 0.0))
+        return math.sqrt(max(self.variance, 0.0))
 
     @property
     def offset(self) -> float:
-        """The offset c [N]: the tension at the reference length l_ref."""
-        return self._c
+        """The offset c [N]: the tension at the reference length l_ref, now."""
+        return float(self._theta[1])
+
+    @property
+    def drift_rate(self) -> float:
+        """The drift d [N per window] of the tension at constant length."""
+        return float(self._theta[2])
 
     @property
     def clamped(self) -> bool:
@@ -233,24 +259,30 @@ class ElasticityEstimator:
 
     def _fuse(self, f: float, l_now: float) -> float:
         """One recursive least-squares step with a window's mean tension [N] and length [m]."""
+        self._gap += 1
         if self._l_ref is None:
             self._l_ref = l_now
         elif abs(l_now - self._l_last) < self.min_length_change:
             return self.k_hat  # excitation guard: no update without motion
         self._l_last = l_now
+        theta, P = self._theta, self._P
+        if self.drift:
+            # t_ref to this window: c += d dt, P = T P T' (T = I + dt e_c e_d')
+            dt = float(self._gap)
+            theta[1] += dt * theta[2]
+            P[1, :] += dt * P[2, :]
+            P[:, 1] += dt * P[:, 2]
+        self._gap = 0
         lam = self.forgetting
-        phi0 = l_now - self._l_ref  # phi = [l - l_ref, 1]
-        e = f - (self._k * phi0 + self._c)  # e = |f| - phi' theta
-        pphi0 = self._p00 * phi0 + self._p01  # P phi
-        pphi1 = self._p01 * phi0 + self._p11
-        s = lam * self._r + phi0 * pphi0 + pphi1  # lambda sigma^2 + phi' P phi
-        k0 = pphi0 / s  # K = P phi / s
-        k1 = pphi1 / s
-        self._k += k0 * e  # theta = theta + K e
-        self._c += k1 * e
-        self._p00 = (self._p00 - k0 * pphi0) / lam  # P = (P - K phi' P) / lambda
-        self._p01 = (self._p01 - k0 * pphi1) / lam
-        self._p11 = (self._p11 - k1 * pphi1) / lam
+        phi = np.array([l_now - self._l_ref, 1.0, 0.0])  # phi = [l - l_ref, 1, t - t_ref]
+        e = f - float(phi @ theta)  # e = |f| - phi' theta
+        p_phi = P @ phi  # P phi
+        s = lam * self._r + float(phi @ p_phi)  # lambda sigma^2 + phi' P phi
+        gain = p_phi / s  # K = P phi / s
+        theta += gain * e  # theta = theta + K e
+        P -= np.outer(gain, p_phi)  # P = (P - K phi' P) / lambda
+        P /= lam
+        self._P = 0.5 * (P + P.T)  # keep it symmetric
         self.samples_used += 1
         if self.is_ready(TRUSTED_RELATIVE_STD):
             self._k_trusted = self.k_hat

@@ -6,14 +6,15 @@ import math
 
 import numpy as np
 
-from tautwire.control import DualPose
+from tautwire.control import DualPose, Pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.primitives.arm_control import current_pose, tension_twist
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.tension_judge import TensionJudge
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
 from tautwire.robot import Arm, Command, Observation
 
@@ -21,6 +22,10 @@ from tautwire.robot import Arm, Command, Observation
 JUDGE_TIME = 0.1
 #: The learning swing keeps the tension below this fraction of the force limit.
 FORCE_LIMIT_RESERVE = 0.8
+
+
+#: Largest angle [rad] between the tool axis and the cable at which D starts learning k.
+ALIGNED = math.radians(10.0)
 
 
 class SingleArmTension(Primitive):
@@ -35,12 +40,17 @@ class SingleArmTension(Primitive):
 
     Learning k (equ:spring_measurement). D runs in three phases:
 
-    1. *Approach*: pull the cable taut to ``force``. The elasticity estimate
-       learns only once the tension has first come within ``tolerance`` of
-       ``force``: while the cable is pulled from slack, the chord lengthens
-       mostly because the sag straightens out and the cable swings; those
-       samples would fit a far softer spring (a 1000 N/m cable read as
-       250 N/m in Fig. 5a).
+    1. *Approach*: pull the cable taut to ``force``, and turn the tool axis
+       the cable leaves along, +x or -x
+       (:class:`~tautwire.primitives.tool_axis.ToolAxis`), onto the cable by
+       the shortest arc (a gripper may start at any yaw: a cable bent round
+       a fingertip rubs the pad and pulls off the line). The elasticity
+       estimate learns only once the tension has first come within
+       ``tolerance`` of ``force`` with the tool axis within ``ALIGNED`` of
+       the cable (the orientation then holds): while the cable is pulled
+       from slack, the chord lengthens mostly because the sag straightens
+       out and the cable swings; those samples would fit a far softer
+       spring (a 1000 N/m cable read as 250 N/m in Fig. 5a).
     2. *Learning*: the set point swings by ``learn_excitation`` (default
        +-20 %) of ``force``, f_d (1 + a sin(2 pi t / ``excitation_period``)),
        until k is known to ``stiffness_std`` (relative std of the fit,
@@ -190,6 +200,7 @@ class SingleArmTension(Primitive):
         self._amplitude = self.excitation
         self._k_history = []
         self.learn_time = None
+        self._axis = ToolAxis()
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -197,10 +208,20 @@ class SingleArmTension(Primitive):
         assert self._desired is not None
         self._ever_taut |= state.taut
         band = max(self.tolerance * self.force, 0.05)
-        if self._phase == "approach" and state.taut and abs(state.tension - self.force) <= band:
+        me = obs.gripper(self.arm)
+        if self._phase == "approach" and state.taut:
+            # lay the tool axis the cable leaves along onto the cable (as G):
+            # a cable bent round a fingertip pulls off the line and rubs the pad
+            q = self._axis.target(me.orientation, state.direction)
+            self._desired = with_pose(self._desired, self.arm, Pose(self._held_position(), q))
+        aligned = state.taut and self._axis.angle(me.orientation, state.direction) <= ALIGNED
+        if self._phase == "approach" and aligned and abs(state.tension - self.force) <= band:
             self._phase = "learning" if self.learn_excitation > 0.0 else "hold"
             self._learn_start = self.elapsed
             ctx.estimator.learn_elasticity = True
+            self._desired = with_pose(
+                self._desired, self.arm, Pose(self._held_position(), me.orientation)
+            )
         self._schedule(ctx)
         f_d = self.set_point(self.elapsed)
         twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state)
@@ -208,6 +229,11 @@ class SingleArmTension(Primitive):
         if self.outcome.done and self.outcome.status == "success":
             ctx.tension = self.force
         return Command(twist)
+
+    def _held_position(self) -> np.ndarray:
+        """The position set point [m] of the tensioning gripper (motion control holds it)."""
+        assert self._desired is not None
+        return self._desired.left.position if self.arm == "left" else self._desired.right.position
 
     def set_point(self, elapsed: float) -> float:
         """Desired tension [N] ``elapsed`` s after the start, with the present swing."""
@@ -244,6 +270,9 @@ class SingleArmTension(Primitive):
         if self._phase != "learning":
             self._amplitude = self.excitation
             return
+        if not self._k_history[:-1]:
+            # the swing starts: fit it alone, not the samples of the cable coming taut
+            elasticity.reset(k_initial=elasticity.k_trusted)
         # the peak stays under the force limit's reserve; a soft cable needs no long stroke
         by_limit = FORCE_LIMIT_RESERVE * ctx.limits.max_force / self.force - 1.0
         by_stroke = self.max_swing * elasticity.k_trusted / self.force
