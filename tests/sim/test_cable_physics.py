@@ -31,6 +31,24 @@ def test_static_stretch_matches_hooke(k: float) -> None:
     assert np.hypot(force[0], force[1]) < 1e-3 * np.linalg.norm(force)
 
 
+def test_hold_and_anchor_add_no_compliance_to_a_stiff_cable() -> None:
+    # D learns k from how far the gripper moves per newton: any give of the
+    # hold (a connect equality) or the anchor in series would read as a
+    # softer cable. Vertical (no sag), k = 1500 N/m: steps of 0.2 mm of the
+    # gripper must change the mean tension by k times the step.
+    k, length, rho = 1500.0, 0.3, 0.03
+    top = np.array([0.0, 0.0, 0.9])
+    steps = np.array([0.0, 2e-4, 4e-4])
+    tensions = []
+    for extra in steps:
+        gripper = top - np.array([0.0, 0.0, length + 1.5 / k + extra])
+        world = anchor_and_gripper(top.tolist(), gripper.tolist(), length, k, rho, orientation=X_UP)
+        rest(world, 0.5)
+        tensions.append(world.wrench("left")[0][2] + 0.5 * rho * length * G)
+    slope = np.polyfit(steps, tensions, 1)[0]
+    assert slope == pytest.approx(k, rel=1e-3)
+
+
 def _elastic_catenary(span: float, length: float, rho: float, k: float) -> tuple[float, float]:
     """Mid-span sag [m] and end slope [rad] of an elastic catenary, supports level."""
     w = rho * G
