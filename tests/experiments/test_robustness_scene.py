@@ -18,15 +18,21 @@ from tautwire.experiments.robustness_scene import (
     MARGIN,
     MIN_HEIGHT,
     NOISE_RANGE,
+    PAD_EXIT,
     PEG_RADIUS_RANGE,
     SLACK_RANGE,
     STIFFNESS_RANGE,
     WRAP_RANGE,
+    anchor_route_length,
     draw_fault,
     draw_scene,
+    peg_route_length,
 )
 from tautwire.scenario.models import Anchor, Peg
 from tautwire.scenario.workspace import WORKSPACE
+from tautwire.sim.build import world_spec
+from tautwire.sim.mjcf import scene_model
+from tautwire.sim.options import SimOptions
 
 
 def _within(value: float, bounds: tuple[float, float]) -> bool:
@@ -72,7 +78,7 @@ def test_every_scene_validates_and_stays_within_the_envelope(seed: int) -> None:
     a = np.array(anchor.position)
     if scene.fixture_type == "anchor":
         assert scene.fixture == "A1" and cable.via == []
-        start = float(np.linalg.norm(gripper - a))
+        start = anchor_route_length(a, gripper, tool_yaw)
         pivot = a
     else:
         peg = next(f for f in scenario.board.fixtures if isinstance(f, Peg))
@@ -80,13 +86,14 @@ def test_every_scene_validates_and_stays_within_the_envelope(seed: int) -> None:
         assert _within(peg.radius, PEG_RADIUS_RANGE)
         assert peg.position[2] + peg.height > gripper[2]  # the cable cannot slip off the top
         pivot = np.array([peg.position[0], peg.position[1], a[2]])
-        start = float(np.linalg.norm(pivot - a) + np.linalg.norm(gripper - pivot))
+        rho = peg.radius + scenario.cables[0].radius + 1e-4
+        start = peg_route_length(a, pivot, rho, gripper, tool_yaw)
         # the bend round the peg, before and after the rotation, stays in range
         bend = _wrapped(_azimuth(gripper - pivot) - _azimuth(pivot - a))
         assert bend == pytest.approx(float(inputs["bend"]), abs=1e-6)
         assert _within(abs(bend), WRAP_RANGE)
         assert _within(abs(bend + angle), WRAP_RANGE)
-    # the start distance along the route is (1 - slack) times the held length
+    # the route the simulator lays is (1 - slack) times the held length
     assert start == pytest.approx((1.0 - slack) * cable.length, rel=1e-6)
     relative = _wrapped(tool_yaw - _azimuth(gripper - pivot))
     assert relative == pytest.approx(float(inputs["tool_yaw_to_cable"]), abs=1e-6)
@@ -125,3 +132,30 @@ def test_every_fault_type_is_drawn() -> None:
     kinds = {draw_fault(seed, 10.0)["kind"] for seed in range(100)}
     assert kinds == set(FAULT_TYPES)
     assert draw_fault(5, 10.0, "slip")["type"] == "slip"
+
+
+@pytest.mark.parametrize("seed", range(0, 40, 3))
+def test_the_route_the_simulator_lays_leaves_the_drawn_slack(seed: int) -> None:
+    """The laid vertices span (1 - slack) of the cable: a grasp across it or a bend round a
+    peg does not start the cable stretched (the vertices cut the arc round a peg short)."""
+    scene = draw_scene(seed)
+    scenario = scene.scenario()
+    laid = scene_model(world_spec(scenario), SimOptions()).vertices["W1"]
+    route = float(np.sum(np.linalg.norm(np.diff(laid, axis=0), axis=1)))
+    target = (1.0 - float(scene.inputs["slack"])) * scenario.cables[0].length
+    assert route <= target + 1e-4
+    assert route >= target - (0.006 if scene.fixture_type == "peg" else 1e-4)
+
+
+def test_route_lengths_of_simple_layouts() -> None:
+    a, g = np.zeros(3), np.array([0.3, 0.0, 0.0])
+    # tool x along the cable: straight; across it: into the fingers along x
+    assert anchor_route_length(a, g, 0.0) == pytest.approx(0.3)
+    assert anchor_route_length(a, g, math.pi / 2) == pytest.approx(
+        math.hypot(0.3, PAD_EXIT) + PAD_EXIT
+    )
+    # a half turn round a peg: two tangents and half the circle
+    rho, axis = 0.01, np.zeros(3)
+    anchor, gripper = np.array([-0.2, rho, 0.0]), np.array([-0.2, -rho, 0.0])
+    length = peg_route_length(anchor, axis, rho, gripper, 0.0)
+    assert length == pytest.approx(0.2 + math.pi * rho + 0.2, abs=1e-9)

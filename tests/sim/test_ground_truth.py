@@ -7,7 +7,7 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.sim import ClipSpec, SimWorld
-from tautwire.sim.ground_truth import GroundTruth
+from tautwire.sim.ground_truth import GRIP_ZONE, GroundTruth, TautSpan
 from tests.sim.scenes import anchor_and_gripper, peg_scene, rest
 
 
@@ -50,6 +50,15 @@ def test_peg_contact_lies_on_the_axis_at_the_cable_height() -> None:
     assert truth.contact("nothing") is None
 
 
+def _through_the_fingers_left_out(truth: GroundTruth, span: TautSpan) -> bool:
+    """Whether the span's segments are exactly those with no vertex within GRIP_ZONE of the hold."""
+    arc = truth.arc_lengths(span.cable)
+    near = np.abs(arc - arc[span.held_vertex]) < GRIP_ZONE
+    lo, hi = span.segments
+    kept = all(not (near[j] or near[j + 1]) for j in range(lo, hi))
+    return kept and bool(near[hi] or near[hi + 1]) and hi < span.held_vertex
+
+
 def test_span_of_a_taut_cable_from_its_anchor() -> None:
     world = anchor_and_gripper([0.0, 0.0, 0.3], [0.3, 0.0, 0.3], 0.29, 200.0)
     rest(world, 0.5)
@@ -59,8 +68,10 @@ def test_span_of_a_taut_cable_from_its_anchor() -> None:
     assert span.contact is not None and np.allclose(span.contact, [0.0, 0.0, 0.3])
     assert span.leave_vertex == 0 and span.held_vertex == len(truth.polyline("W")) - 1
     assert span.rest_length == pytest.approx(0.29)
-    # the mean elastic tension, and the noise-free force the gripper feels
-    assert span.taut and span.tension == pytest.approx(truth.tensions("W").mean())
+    # the mean elastic tension outside the fingers, and the noise-free force the gripper feels
+    lo, hi = span.segments
+    assert lo == 0 and _through_the_fingers_left_out(truth, span)
+    assert span.taut and span.tension == pytest.approx(truth.tensions("W")[lo:hi].mean())
     assert span.tension == pytest.approx(float(np.linalg.norm(world.wrench("left")[0])), rel=0.02)
     assert truth.span_tension(span) == pytest.approx((span.tension, True))
     assert truth.max_force >= 0.98 * span.tension
@@ -85,7 +96,8 @@ def test_span_leaves_from_the_peg_the_cable_bears_on() -> None:
     off_axis = float(np.hypot(*(span.leave[:2] - [0.15, 0.05])))
     assert 0.006 + 0.0025 - 1e-3 <= off_axis <= 0.006 + 0.0025 + 0.005
     assert 0 < span.leave_vertex < span.held_vertex
-    tensions = truth.tensions("W")[span.leave_vertex : span.held_vertex]
+    assert span.segments[0] == span.leave_vertex and _through_the_fingers_left_out(truth, span)
+    tensions = truth.tensions("W")[slice(*span.segments)]
     assert span.tension == pytest.approx(tensions.mean()) and span.taut
     with pytest.raises(InvalidArgumentError, match="not a peg"):
         truth.peg_radius("A")

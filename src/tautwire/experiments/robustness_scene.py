@@ -17,7 +17,10 @@ fixture). The envelope (issue 10):
   (0.8-2.6 rad): wound further the cable would cross itself, which the
   simulated cable (no self-collision) cannot do faithfully;
 - slack 2-15 %: the start distance along the route is (1 - slack) times the
-  held length;
+  held length, measured along the route the simulator lays (round the peg
+  at its radius plus the cable's, and into the fingers along the tool's
+  x-axis, :mod:`tautwire.sim.route`): a straight-line distance would let a
+  sideways grasp or a wide bend round a peg start the cable stretched;
 - force noise 0.03-0.1 N per axis (torque noise 0.04 m times it);
 - tension set point 1.5-4 N.
 
@@ -35,6 +38,7 @@ run: its time is a random fraction (0.1-0.9) of the clean run's duration.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -45,6 +49,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.scenario import Scenario
 from tautwire.scenario.loader import scenario_from_data
 from tautwire.scenario.workspace import WORKSPACE
+from tautwire.sim.options import SimOptions
 
 FloatArray = NDArray[np.float64]
 
@@ -67,6 +72,8 @@ MARGIN = 0.05  # m, from the workspace's faces
 #: Most redraws of a scene's cable and angle before giving up.
 MAX_REDRAWS = 200
 MIN_HEIGHT = 0.05  # m, least gripper height over the board
+#: How far [m] the simulator lays a held cable along the tool's x-axis into the fingers.
+PAD_EXIT = SimOptions().pad_exit
 #: Fixture types the campaign draws.
 FIXTURE_TYPES: tuple[str, ...] = ("anchor", "peg")
 #: Fault types the campaign draws (a freeze is short, <= 50 ms, or long, > 0.1 s).
@@ -114,11 +121,13 @@ def _inside(p: FloatArray) -> bool:
 def _arc_inside(centre: FloatArray, radius: float, start: float, angle: float, z: float) -> bool:
     """Whether the horizontal arc about ``centre`` from azimuth ``start`` by ``angle`` fits."""
     n = max(8, int(abs(angle) / 0.05))
-    for a in np.linspace(start, start + angle, n + 1):
-        p = np.array([centre[0] + radius * math.cos(a), centre[1] + radius * math.sin(a), z])
-        if not _inside(p):
-            return False
-    return True
+    a = np.linspace(start, start + angle, n + 1)
+    lo = np.asarray(WORKSPACE.lower) + MARGIN
+    hi = np.asarray(WORKSPACE.upper) - MARGIN
+    x = centre[0] + radius * np.cos(a)
+    y = centre[1] + radius * np.sin(a)
+    inside = (x >= lo[0]) & (x <= hi[0]) & (y >= lo[1]) & (y <= hi[1])
+    return bool(np.all(inside) and lo[2] <= z <= hi[2] and z >= MIN_HEIGHT)
 
 
 def _yaw_quaternion(yaw: float) -> list[float]:
@@ -157,10 +166,117 @@ def _horizontal(azimuth: float) -> FloatArray:
     return np.array([math.cos(azimuth), math.sin(azimuth), 0.0])
 
 
-def _place_anchor(d: _Draws, length: float, angle: float, stretch: float) -> dict[str, Any] | None:
-    """Anchor, gripper start, and the fixtures, or None if this draw does not fit."""
+def _entry(gripper: FloatArray, tool_yaw: float, towards: FloatArray) -> FloatArray:
+    """Where the laid route enters the fingers: ``PAD_EXIT`` along tool +-x, towards ``towards``."""
+    x_tool = _horizontal(tool_yaw)
+    sign = -1.0 if float(x_tool @ (towards - gripper)) > 0.0 else 1.0
+    out: FloatArray = gripper - sign * PAD_EXIT * x_tool
+    return out
+
+
+def anchor_route_length(anchor: FloatArray, gripper: FloatArray, tool_yaw: float) -> float:
+    """Length [m] of the route the simulator lays from an anchor to a held end.
+
+    Straight to the point where the route enters the fingers, then along
+    the tool's x-axis to the tool centre point (``tautwire.sim.route``).
+    """
+    entry = _entry(gripper, tool_yaw, anchor)
+    return float(np.linalg.norm(entry - anchor)) + PAD_EXIT
+
+
+def _tangent(point: FloatArray, centre: FloatArray, rho: float, side: FloatArray) -> FloatArray:
+    """The horizontal tangent point on the circle (centre, rho) from ``point``, on ``side``."""
+    rel = point[:2] - centre[:2]
+    dist = float(np.linalg.norm(rel))
+    if dist <= rho:
+        return np.array([centre[0] + rho * side[0], centre[1] + rho * side[1]])
+    beta = math.acos(rho / dist)
+    u = rel / dist
+    best, best_dot = u, -math.inf
+    for b in (beta, -beta):
+        c, s = math.cos(b), math.sin(b)
+        cand = np.array([c * u[0] - s * u[1], s * u[0] + c * u[1]])
+        if float(cand @ side) > best_dot:
+            best, best_dot = cand, float(cand @ side)
+    out: FloatArray = centre[:2] + rho * best
+    return out
+
+
+def peg_route_length(
+    anchor: FloatArray, axis: FloatArray, rho: float, gripper: FloatArray, tool_yaw: float
+) -> float:
+    """Length [m] of the route the simulator lays from an anchor round a peg to a held end.
+
+    Anchor, the tangent to the circle of radius ``rho`` (peg + cable radius)
+    about the peg's ``axis`` point on the side away from the bend's inside,
+    the arc, the tangent towards the gripper, then into the fingers as
+    :func:`anchor_route_length` (``tautwire.sim.route``); the arc lies half
+    way between the anchor's and the gripper's heights.
+    """
+    ua = (anchor - axis)[:2] / float(np.linalg.norm((anchor - axis)[:2]))
+    ub = (gripper - axis)[:2] / float(np.linalg.norm((gripper - axis)[:2]))
+    inner = ua + ub
+    side = -inner / float(np.linalg.norm(inner))
+    t1 = _tangent(anchor, axis, rho, side)
+    t2 = _tangent(gripper, axis, rho, side)
+    a1 = math.atan2(t1[1] - axis[1], t1[0] - axis[0])
+    a2 = math.atan2(t2[1] - axis[1], t2[0] - axis[0])
+    ao = math.atan2(side[1], side[0])
+    d12 = (a2 - a1) % (2.0 * math.pi)
+    sweep = d12 if (ao - a1) % (2.0 * math.pi) <= d12 else 2.0 * math.pi - d12
+    z = 0.5 * (float(anchor[2]) + float(gripper[2]))
+    p1, p2 = np.array([t1[0], t1[1], z]), np.array([t2[0], t2[1], z])
+    entry = _entry(gripper, tool_yaw, p2)
+    return float(np.linalg.norm(p1 - anchor) + rho * sweep + np.linalg.norm(entry - p2) + PAD_EXIT)
+
+
+def _reach(route: Callable[[float], float], target: float, low: float, high: float) -> float | None:
+    """The distance r in [low, high] at which the increasing ``route(r)`` is ``target``, or None."""
+    if route(low) > target or route(high) < target:
+        return None
+    for _ in range(32):  # to 0.3 um over 1.2 m
+        mid = 0.5 * (low + high)
+        if route(mid) < target:
+            low = mid
+        else:
+            high = mid
+    return 0.5 * (low + high)
+
+
+def _anchor_route(
+    anchor: FloatArray, u: FloatArray, dz: float, tool_yaw: float
+) -> Callable[[float], float]:
+    """The laid route's length [m] with the gripper at horizontal distance r along ``u``."""
+
+    def route(r: float) -> float:
+        return anchor_route_length(anchor, anchor + r * u + np.array([0.0, 0.0, dz]), tool_yaw)
+
+    return route
+
+
+def _peg_route(
+    anchor: FloatArray, axis: FloatArray, rho: float, u: FloatArray, dz: float, tool_yaw: float
+) -> Callable[[float], float]:
+    """The laid route's length [m] with the gripper at distance r from the peg along ``u``."""
+
+    def route(r: float) -> float:
+        gripper = axis + r * u + np.array([0.0, 0.0, dz])
+        return peg_route_length(anchor, axis, rho, gripper, tool_yaw)
+
+    return route
+
+
+def _place_anchor(
+    d: _Draws, length: float, angle: float, stretch: float, tool_yaw: float
+) -> dict[str, Any] | None:
+    """Anchor, gripper start, and the fixtures, or None if this draw does not fit.
+
+    The gripper's distance is the one at which the route the simulator lays
+    is (1 - slack) times the cable.
+    """
     slack = d.inputs["slack"]
     assert isinstance(slack, float)
+    target = (1.0 - slack) * length
     for _ in range(400):
         anchor = np.array(
             [
@@ -171,10 +287,16 @@ def _place_anchor(d: _Draws, length: float, angle: float, stretch: float) -> dic
         )
         azimuth = float(d.rng.uniform(-math.pi, math.pi))
         dz = float(d.rng.uniform(-0.02, 0.03))
-        start = (1.0 - slack) * length
-        horizontal = math.sqrt(max(start**2 - dz**2, 0.0))
-        gripper = anchor + horizontal * _horizontal(azimuth) + np.array([0.0, 0.0, dz])
-        taut = length + stretch
+        u = _horizontal(azimuth)
+        # the laid route is at most 2 PAD_EXIT longer than the straight line: check the
+        # circle at the largest radius it can have first (cheap), then solve for r
+        if not _arc_inside(anchor, length + stretch + PAD_EXIT, azimuth, angle, anchor[2] + dz):
+            continue
+        r = _reach(_anchor_route(anchor, u, dz, tool_yaw), target, 0.05, 1.2)
+        if r is None:
+            continue
+        gripper = anchor + r * u + np.array([0.0, 0.0, dz])
+        taut = r + slack * length + stretch + PAD_EXIT
         if _inside(gripper) and _arc_inside(anchor, taut, azimuth, angle, float(gripper[2])):
             return {
                 "anchor": anchor,
@@ -188,18 +310,23 @@ def _place_anchor(d: _Draws, length: float, angle: float, stretch: float) -> dic
     return None
 
 
-def _place_peg(d: _Draws, length: float, angle: float, stretch: float) -> dict[str, Any] | None:
+def _place_peg(
+    d: _Draws, length: float, angle: float, stretch: float, tool_yaw: float
+) -> dict[str, Any] | None:
     """Peg, anchor behind it, gripper start, or None if this draw does not fit.
 
-    The cable comes from the anchor along u_in, bends round the peg by the
-    wrap w (positive: to the left, about +z) and leaves towards the gripper.
-    Turning the gripper about the peg by ``angle`` changes the wrap by
-    ``angle`` when the bend has the angle's sign; both the start and the end
-    wrap lie in :data:`WRAP_RANGE`.
+    The cable comes from the anchor along u_in, bends round the peg by
+    ``bend`` (positive: to the left, about +z) and leaves towards the
+    gripper. Turning the gripper about the peg by ``angle`` changes the bend
+    by ``angle``; both the start and the end bend lie in :data:`WRAP_RANGE`.
+    The gripper's distance is the one at which the route the simulator lays
+    is (1 - slack) times the cable.
     """
     slack = d.inputs["slack"]
     radius = d.inputs["peg_radius"]
     assert isinstance(slack, float) and isinstance(radius, float)
+    rho = radius + RADIUS + 1e-4
+    target = (1.0 - slack) * length
     sense = math.copysign(1.0, angle)
     w_lo, w_hi = WRAP_RANGE
     for _ in range(400):
@@ -218,16 +345,20 @@ def _place_peg(d: _Draws, length: float, angle: float, stretch: float) -> dict[s
             bend = -sense * float(d.rng.uniform(w_lo + abs(angle), w_hi))
         u_in = float(d.rng.uniform(-math.pi, math.pi))
         behind = float(d.rng.uniform(0.04, min(0.3, 0.5 * length)))
-        anchor = peg + np.array([0.0, 0.0, z]) - behind * _horizontal(u_in)
-        out = u_in + bend
-        span = (1.0 - slack) * length - behind
-        dz = float(d.rng.uniform(-0.01, 0.02))
-        if span < 0.07:
-            continue
-        horizontal = math.sqrt(max(span**2 - dz**2, 0.0))
         axis = np.array([peg[0], peg[1], z])
-        gripper = axis + horizontal * _horizontal(out) + np.array([0.0, 0.0, dz])
-        taut = length - behind + stretch
+        anchor = axis - behind * _horizontal(u_in)
+        out = u_in + bend
+        dz = float(d.rng.uniform(-0.01, 0.02))
+        u = _horizontal(out)
+        widest = length - behind + stretch + PAD_EXIT + rho * abs(angle)
+        if not (_inside(anchor) and _arc_inside(axis, widest, out, angle, z + dz)):
+            continue
+        r = _reach(_peg_route(anchor, axis, rho, u, dz, tool_yaw), target, 0.07, 1.2)
+        if r is None:
+            continue
+        gripper = axis + r * u + np.array([0.0, 0.0, dz])
+        # taut, and with the wrap the rotation may unwind
+        taut = r + slack * length + stretch + PAD_EXIT + rho * abs(angle)
         height = z + float(d.rng.uniform(0.03, 0.06))
         if (
             _inside(gripper)
@@ -297,7 +428,9 @@ def draw_scene(seed: int, fixture_type: str | None = None) -> RobustnessScene:
         d.inputs["angle"] = round(angle, 6)
         tool_yaw = d.uniform("tool_yaw", -math.pi, math.pi)
         stretch = force / stiffness
-        place = (_place_peg if kind == "peg" else _place_anchor)(d, length, angle, stretch)
+        place = (_place_peg if kind == "peg" else _place_anchor)(
+            d, length, angle, stretch, tool_yaw
+        )
     d.inputs["redraws"] = redraws
     gripper = place["gripper"]
     d.point("gripper", gripper)

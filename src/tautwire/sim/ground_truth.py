@@ -24,6 +24,11 @@ FloatArray = NDArray[np.float64]
 #: radius) that the cable is in contact with counts as touching it: MuJoCo's
 #: contact margin and the polygonal cable keep the vertices a few mm off.
 NEAR = 0.005
+#: Segments with a vertex within this rest length [m] of a held vertex run
+#: through the fingers (pads 20 mm long): their tendons also carry the pads'
+#: contact forces (up to several times the cable's tension where the cable
+#: bends round a fingertip), so the span's tension is taken outside them.
+GRIP_ZONE = 0.015
 
 
 @dataclass(frozen=True)
@@ -62,12 +67,14 @@ class TautSpan:
             (the anchor itself, or the last vertex touching a peg or a clip).  # (3,)
         middle: The cable vertex half way along the span [m].  # (3,)
         held: The held vertex [m] (at the tool centre point).  # (3,)
-        tension: Mean elastic tension [N] of the span's segments.
-        taut: Whether every segment of the span is stretched (tension > 0).
+        tension: Mean elastic tension [N] of the span's free segments (those
+            outside the gripper's fingers, see :data:`GRIP_ZONE`).
+        taut: Whether every free segment of the span is stretched (tension > 0).
         leave_vertex: Index of the ``leave`` vertex.
         held_vertex: Index of the ``held`` vertex.
         rest_length: Rest length [m] of the span (along the cable between
             the two vertices).
+        segments: The free segments' indices, first and past the last.
     """
 
     cable: str
@@ -82,6 +89,7 @@ class TautSpan:
     leave_vertex: int
     held_vertex: int
     rest_length: float
+    segments: tuple[int, int]
 
 
 class GroundTruth:
@@ -262,9 +270,9 @@ class GroundTruth:
             i = 0 if step < 0 else len(pts) - 1
             if step < 0 and idx.spec.start is not None:
                 fixture = idx.spec.start
-        lo, hi = min(i, h), max(i, h)
-        tension = self.tensions(cable)[lo:hi] if hi > lo else np.zeros(1)
         arc = self._world.scene.discretizations[cable].arc
+        segments = _free_segments(arc, i, h)
+        tension = self._segment_tensions(cable, segments)
         contact = None
         if fixture is not None:
             found = self.contact(fixture)
@@ -282,6 +290,7 @@ class GroundTruth:
             i,
             h,
             float(abs(arc[h] - arc[i])),
+            segments,
         )
 
     def span_tension(self, span: TautSpan) -> tuple[float, bool]:
@@ -289,9 +298,13 @@ class GroundTruth:
 
         Cheaper than :meth:`span` when the span's vertices are known.
         """
-        lo, hi = sorted((span.leave_vertex, span.held_vertex))
-        tension = self.tensions(span.cable)[lo:hi] if hi > lo else np.zeros(1)
+        tension = self._segment_tensions(span.cable, span.segments)
         return float(np.mean(tension)), bool(np.all(tension > 0.0))
+
+    def _segment_tensions(self, cable: str, segments: tuple[int, int]) -> FloatArray:
+        lo, hi = segments
+        out: FloatArray = self.tensions(cable)[lo:hi] if hi > lo else np.zeros(1)
+        return out
 
     def _contact_pairs(self) -> set[tuple[str, str]]:
         """(fixture, cable) of every MuJoCo contact between a cable and a fixture."""
@@ -403,3 +416,19 @@ def _closest_on_polyline(polyline: FloatArray, p: FloatArray) -> FloatArray:
     q = a + t[:, None] * ab
     out: FloatArray = q[int(np.argmin(np.linalg.norm(q - p, axis=1)))]
     return out
+
+
+def _free_segments(arc: FloatArray, leave: int, held: int) -> tuple[int, int]:
+    """Segments between vertices ``leave`` and ``held`` outside the fingers (first, past last).
+
+    Keeps at least the segment furthest from the held vertex.
+    """
+    lo, hi = min(leave, held), max(leave, held)
+    if hi == lo:
+        return lo, lo
+    inside = np.abs(arc - arc[held]) < GRIP_ZONE
+    free = [j for j in range(lo, hi) if not (inside[j] or inside[j + 1])]
+    if not free:
+        far = lo if held == hi else hi - 1
+        return far, far + 1
+    return free[0], free[-1] + 1
