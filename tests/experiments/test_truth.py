@@ -219,3 +219,15 @@ def test_coverage_counts_converged_samples_within_3_std_on_every_axis() -> None:
     ]
     assert coverage(samples) == (3, pytest.approx(2 / 3))
     assert coverage([]) == (0, None)
+    with_p = FilterSample(
+        0.0,
+        1,
+        "A",
+        False,
+        np.array([0.002, 0.0, 0.0]),
+        np.zeros(3),
+        np.full(3, 0.001),
+        True,
+        np.diag([1e-6, 4e-6, 1e-6]),
+    )
+    assert with_p.nees == pytest.approx(4.0) and samples[0].nees is None

@@ -478,6 +478,7 @@ class FilterSample:
             the cable leaves the peg (a point estimate).  # (3,)
         std: sqrt(diag(P)) [m].  # (3,)
         trusted: Whether the largest std is at most the estimator's trusted_std.
+        covariance: The filter's P [m^2].  # (3, 3)
     """
 
     time: float
@@ -488,6 +489,18 @@ class FilterSample:
     truth: FloatArray
     std: FloatArray
     trusted: bool
+    covariance: FloatArray | None = None
+
+    @property
+    def nees(self) -> float | None:
+        """The 3-D normalised estimation error squared e' P^-1 e (None without P)."""
+        if self.covariance is None:
+            return None
+        e = self.estimate - self.truth
+        try:
+            return float(e @ np.linalg.solve(self.covariance, e))
+        except np.linalg.LinAlgError:
+            return None
 
     @property
     def error(self) -> float:
@@ -566,6 +579,7 @@ class FilterWatch:
                 np.asarray(true_point, dtype=float).copy(),
                 std,
                 float(np.max(std)) <= estimator.trusted_std,
+                kf.P.copy(),
             )
         )
 
