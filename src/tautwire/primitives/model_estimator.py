@@ -420,8 +420,15 @@ class ModelEstimator:
         self._recent.append((p_line, f_mean))
         if self._pending is not None:
             return self._judge_change(p_line, f_mean)
-        if result.changed and result.estimate is not None and kf.replaced is not None:
+        if (
+            result.changed
+            and result.estimate is not None
+            and kf.replaced is not None
+            and self._was_trusted(kf.replaced)
+        ):
             # a hypothesis until it is checked: the point keeps its estimate
+            # (an estimate not yet trusted is no contact to change from: the
+            # filter's restart is its convergence)
             previous = kf.replaced
             old = previous.x if previous.running else self._filter_point_position()
             self._pending = ChangeHypothesis(previous, self.iterations - 1)
@@ -485,6 +492,12 @@ class ModelEstimator:
                     " force-torque sensor bias, or a contact the model cannot describe"
                 )
         return False
+
+    def _was_trusted(self, state: FilterState) -> bool:
+        """Whether the model used ``state`` as its contact (std and design gate)."""
+        if not state.running or float(np.max(np.diag(state.P))) > self.trusted_std**2:
+            return False
+        return self._design is None or norm3(state.x - self._design) <= DESIGN_GATE
 
     def _drop_hypothesis(self, record: list[int]) -> None:
         assert self._pending is not None

@@ -10,6 +10,7 @@ from tautwire.control import DualPose, Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -26,6 +27,8 @@ FORCE_LIMIT_RESERVE = 0.8
 
 #: Largest angle [rad] between the tool axis and the cable at which D starts learning k.
 ALIGNED = math.radians(10.0)
+#: How long [s] a turned gripper must stay aligned before D learns k.
+ALIGNED_TIME = 0.2
 
 
 class SingleArmTension(Primitive):
@@ -47,10 +50,11 @@ class SingleArmTension(Primitive):
        a fingertip rubs the pad and pulls off the line). The elasticity
        estimate learns only once the tension has first come within
        ``tolerance`` of ``force`` with the tool axis within ``ALIGNED`` of
-       the cable (the orientation then holds): while the cable is pulled
-       from slack, the chord lengthens mostly because the sag straightens
-       out and the cable swings; those samples would fit a far softer
-       spring (a 1000 N/m cable read as 250 N/m in Fig. 5a).
+       the cable (for ``ALIGNED_TIME`` if it had to turn; the alignment
+       goes on in every phase, on the low-passed direction): while the
+       cable is pulled from slack, the chord lengthens mostly because the
+       sag straightens out and the cable swings; those samples would fit a
+       far softer spring (a 1000 N/m cable read as 250 N/m in Fig. 5a).
     2. *Learning*: the set point swings by ``learn_excitation`` (default
        +-20 %) of ``force``, f_d (1 + a sin(2 pi t / ``excitation_period``)),
        until k is known to ``stiffness_std`` (relative std of the fit,
@@ -201,6 +205,9 @@ class SingleArmTension(Primitive):
         self._k_history = []
         self.learn_time = None
         self._axis = ToolAxis()
+        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
+        self._aligned_since: float | None = None
+        self._taut_since: float | None = None
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -209,19 +216,30 @@ class SingleArmTension(Primitive):
         self._ever_taut |= state.taut
         band = max(self.tolerance * self.force, 0.05)
         me = obs.gripper(self.arm)
-        if self._phase == "approach" and state.taut:
-            # lay the tool axis the cable leaves along onto the cable (as G):
-            # a cable bent round a fingertip pulls off the line and rubs the pad
-            q = self._axis.target(me.orientation, state.direction)
+        aligned = False
+        if state.taut:
+            # lay the tool axis the cable leaves along onto the cable (as G),
+            # on the low-passed direction: a cable bent round a fingertip
+            # pulls off the line, rubs the pad and makes the force jump
+            cable = self._cable.update(obs.time, state.direction)
+            q = self._axis.target(me.orientation, cable)
             self._desired = with_pose(self._desired, self.arm, Pose(self._held_position(), q))
-        aligned = state.taut and self._axis.angle(me.orientation, state.direction) <= ALIGNED
-        if self._phase == "approach" and aligned and abs(state.tension - self.force) <= band:
+            aligned = self._axis.angle(me.orientation, cable) <= ALIGNED
+        if not aligned:
+            self._aligned_since = None
+        elif self._aligned_since is None:
+            self._aligned_since = obs.time
+        if state.taut and self._taut_since is None:
+            self._taut_since = obs.time
+        # aligned from the first taut sample on, or for ALIGNED_TIME since
+        settled = self._aligned_since is not None and (
+            self._aligned_since == self._taut_since
+            or obs.time - self._aligned_since >= ALIGNED_TIME
+        )
+        if self._phase == "approach" and settled and abs(state.tension - self.force) <= band:
             self._phase = "learning" if self.learn_excitation > 0.0 else "hold"
             self._learn_start = self.elapsed
             ctx.estimator.learn_elasticity = True
-            self._desired = with_pose(
-                self._desired, self.arm, Pose(self._held_position(), me.orientation)
-            )
         self._schedule(ctx)
         f_d = self.set_point(self.elapsed)
         twist = tension_twist(ctx, obs, self.arm, self._desired, f_d, state)
