@@ -11,6 +11,11 @@ Figures (medians over thousands of repetitions, microseconds unless named):
 - filterpy_kf_update_us: the same measurement fused by filterpy's textbook
   KalmanFilter (predict + update, z/H/R built the same way) as the reference;
 - control_tick_filterpy_us: the control tick with filterpy's filter instead;
+- guarded_tick_us: the control tick as a run makes it: through the fault
+  layer (RobotGuard: act + observe) with the whole-wrench observation (the
+  line of action from force and torque); guarded_tick_filterpy_us: the same
+  tick with filterpy's KalmanFilter fed the same line; their ratio
+  guarded_tick_ratio_vs_filterpy (< 1: ours is faster);
 - elasticity_update_us, hybrid_controller_us, model_update_us: the parts;
 - sim_step_us, sim_realtime_factor: the simulated world, where available.
 """
@@ -119,6 +124,7 @@ def control_benchmarks(n: int) -> dict[str, Any]:
         return run
 
     primitive_us = primitive_tick_us(n)
+    guarded = guarded_tick_benchmarks(n)
 
     kf = fresh_filter()
     tick_us = median_us(tick(lambda i: kf.update(p[40 + i % n], f[40 + i % n])), n)
@@ -134,6 +140,106 @@ def control_benchmarks(n: int) -> dict[str, Any]:
         "hybrid_controller_us": hy_us,
         "model_update_us": mu_us,
         "control_period_us": 4000.0,
+        **guarded,
+    }
+
+
+class ReplayRobot:
+    """A robot that replays recorded samples (with torques) and ignores commands."""
+
+    def __init__(self, observations: list[Any]) -> None:
+        self._obs = observations
+        self._i = 0
+
+    @property
+    def control_period(self) -> float:
+        return 0.004
+
+    def observe(self) -> Any:
+        return self._obs[self._i % len(self._obs)]
+
+    def act(self, command: Any) -> None:
+        self._i += 1
+
+
+def guarded_tick_benchmarks(n: int) -> dict[str, float]:
+    """The control tick through the fault layer with the whole-wrench line, ours vs filterpy."""
+    from filterpy.kalman import KalmanFilter
+
+    from tautwire.estimation.force_line import line_offset_variance, line_point
+    from tautwire.robot import Command, GripperState, Observation, Wrench
+    from tautwire.tasks.robot_guard import RobotGuard
+
+    data = circle(seed=3, n=n + 400, samples_per_circle=125, tension=4.0)
+    p, f = data.p_gripper, data.f_sens
+    contact = data.contact[0]
+    rng = np.random.default_rng(3)
+    # the cable leaves the fingers 10 mm to the side: a torque about the tcp
+    side = np.cross([0.0, 0.0, 1.0], (contact - p) / np.linalg.norm(contact - p, axis=1)[:, None])
+    tau = np.cross(0.01 * side, f) + 0.002 * rng.standard_normal(f.shape)
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    right = GripperState(np.array([0.35, -0.3, 0.12]), q)
+    obs = [
+        Observation(0.004 * i, GripperState(p[i], q), right, (Wrench("left", f[i], tau[i]),))
+        for i in range(len(p))
+    ]
+    graph = PathGraph.from_positions(
+        [contact, p[0], p[0] + [0.0, 0.0, -0.1]],
+        mass_per_length=0.03,
+        kinds=["contact", "gripper", "free"],
+    )
+    controller = HybridController(limits=SafetyLimits(max_force=15.0))
+    right_pose = Pose(right.position, q)
+    zero = Command()
+
+    def make(update: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray]):  # type: ignore[no-untyped-def]
+        guard = RobotGuard(ReplayRobot(obs), force_limit=15.0, force_noise=0.05)
+        est = ElasticityEstimator(force_noise=0.05)
+
+        def run(i: int) -> None:
+            guard.act(zero)
+            o = guard.observe()
+            w = o.wrenches[0]
+            p_g = o.left.position
+            estimate = update(p_g, w.force, w.torque)
+            update_by_constraints(graph, {0: estimate, 1: p_g})
+            length = float(np.linalg.norm(p_g - estimate))
+            est.update(float(np.linalg.norm(w.force)), length)
+            current = DualPose(Pose(p_g, q), right_pose)
+            directions = (estimate - p_g, None)
+            controller(current, current, (4.0, None), (w.force, None), est.k_hat, directions)
+
+        return run
+
+    kf = ContactPointFilter(force_noise=0.05, torque_noise=0.002)
+    for i in range(40):
+        kf.update(p[i], f[i], torque=tau[i])
+
+    def ours(p_g: np.ndarray, force: np.ndarray, torque: np.ndarray) -> np.ndarray:
+        kf.update(p_g, force, torque=torque)
+        return kf.x
+
+    fkf = KalmanFilter(dim_x=3, dim_z=2)
+    fkf.x = kf.x.copy()
+    fkf.P = kf.P.copy()
+    fkf.F = np.eye(3)
+    fkf.Q = kf.Q.copy()
+
+    def theirs(p_g: np.ndarray, force: np.ndarray, torque: np.ndarray) -> np.ndarray:
+        point = line_point(p_g, force, torque)
+        fn = float(np.linalg.norm(force))
+        extra = line_offset_variance(fn, float(np.linalg.norm(point - p_g)), 0.05, 0.002)
+        o = contact_observation(point, force, float(np.linalg.norm(point - fkf.x)), 0.05)
+        fkf.predict()
+        fkf.update(o.z, H=o.H, R=o.R + extra * np.eye(2))
+        return np.asarray(fkf.x, dtype=float).reshape(3)
+
+    ours_us = median_us(make(ours), n)
+    theirs_us = median_us(make(theirs), n)
+    return {
+        "guarded_tick_us": ours_us,
+        "guarded_tick_filterpy_us": theirs_us,
+        "guarded_tick_ratio_vs_filterpy": round(ours_us / theirs_us, 3),
     }
 
 
