@@ -44,3 +44,27 @@ def test_offline_stiffness_from_a_breathing_circle(tmp_path):
         assert np.linalg.norm(res.contact - CONTACT) < 1e-3
         assert res.stiffness is not None
         assert abs(res.stiffness / k - 1.0) <= 0.05
+
+
+def test_offline_uses_the_logged_torques(tmp_path):
+    # the cable leaves the fingers 20 mm to the side of the logged gripper point
+    rng = np.random.default_rng(7)
+    n = 200
+    theta = np.linspace(0.0, np.pi, n)
+    p = CONTACT + 0.25 * np.stack([np.cos(theta), np.sin(theta), 0 * theta], axis=1)
+    towards = (CONTACT - p) / np.linalg.norm(CONTACT - p, axis=1)[:, None]
+    exit_point = p + 0.02 * np.cross([0.0, 0.0, 1.0], towards)
+    chord = CONTACT - exit_point
+    f = 3.0 * chord / np.linalg.norm(chord, axis=1)[:, None]
+    tau = np.cross(exit_point - p, f) + rng.normal(0, 0.002, (n, 3))
+    f = f + rng.normal(0, 0.05, (n, 3))
+    t = np.arange(n) / 250.0
+    q = np.tile([1.0, 0.0, 0.0, 0.0], (n, 1))
+    with_torque = tmp_path / "with.csv"
+    without = tmp_path / "without.csv"
+    write_force_log(with_torque, t, p, f, q, tau)
+    write_force_log(without, t, p, f)
+    good = estimate_force_log(read_force_log(with_torque))
+    biased = estimate_force_log(read_force_log(without))
+    assert np.linalg.norm(good.contact - CONTACT) < 2e-3
+    assert np.linalg.norm(biased.contact - CONTACT) > 1e-2

@@ -84,6 +84,14 @@ def _summary(path: str, result: OfflineEstimate) -> str:
     help="Force sensor noise [N], std per axis.",
 )
 @click.option(
+    "--torque-noise",
+    type=float,
+    default=0.002,
+    show_default=True,
+    metavar="SIGMA",
+    help="Torque sensor noise [N m], std per axis (used when the log has tx,ty,tz).",
+)
+@click.option(
     "--edge-length",
     type=float,
     default=None,
@@ -96,6 +104,7 @@ def estimate(
     mass_per_length: float,
     process_noise: float,
     force_noise: float,
+    torque_noise: float,
     edge_length: float | None,
 ) -> int:
     """Estimate the contact point(s) and the cable stiffness from a force log."""
@@ -106,6 +115,7 @@ def estimate(
         process_noise=process_noise,
         mass_per_length=mass_per_length,
         edge_length=edge_length,
+        torque_noise=torque_noise,
     )
     if as_json:
         click.echo(json.dumps(estimate_to_json(result), allow_nan=False))

@@ -72,12 +72,20 @@ def estimate_force_log(
     process_noise: float = DEFAULT_PROCESS_NOISE,
     mass_per_length: float = 0.0,
     edge_length: float | None = None,
+    torque_noise: float = 0.002,
 ) -> OfflineEstimate:
     """Estimate the contact point(s) and the stiffness of a force log.
+
+    When the log has torques (``tx,ty,tz``, about the logged gripper
+    position), each sample's line runs through the whole wrench's line of
+    action (:mod:`~tautwire.estimation.force_line`): where the cable left
+    the fingers does not bias the contact.
 
     Args:
         log: A validated force log.
         force_noise: sigma_f [N], force sensor noise, std per axis.
+        torque_noise: sigma_tau [N m], torque sensor noise, std per axis
+            (used when the log has torques).
         process_noise: q [m^2 per step], the filter's process noise.
         mass_per_length: rho [kg/m] for weight compensation (0 = off).
         edge_length: Known gripper-contact length [m], or None.
@@ -91,10 +99,12 @@ def estimate_force_log(
         process_noise=process_noise,
         mass_per_length=mass_per_length,
         edge_length=edge_length,
+        torque_noise=torque_noise,
     )
     history: list[HistoryEntry] = []
-    for t, p, f in zip(log.t, log.p_gripper, log.f_sens, strict=True):
-        r = flt.update(p, f)
+    torques = log.torque if log.torque is not None else [None] * len(log)
+    for t, p, f, tau in zip(log.t, log.p_gripper, log.f_sens, torques, strict=True):
+        r = flt.update(p, f, torque=tau)
         history.append(HistoryEntry(float(t), r.estimate, r.std))
     window = flt.detector.window
     starts = [0] + [max(c - window + 1, 0) for c in flt.changes]
