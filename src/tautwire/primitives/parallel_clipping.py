@@ -6,8 +6,8 @@ import math
 
 import numpy as np
 
-from tautwire.control import CoordinatedPose, Pose, coordinated_pose
-from tautwire.model.quaternion import orientation_along
+from tautwire.control import CoordinatedPose, DualPose, Pose, coordinated_pose
+from tautwire.model.quaternion import multiply, orientation_along, rotate
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.clip_sensing import ClipHeight, push_tension
@@ -27,6 +27,8 @@ PUSH_SPEED = 0.015
 MAX_ANGLE = math.radians(60.0)
 #: Lowest height [m] above the table the grippers may go.
 TABLE_CLEARANCE = 0.015
+#: Half a turn about the tool z-axis [w, x, y, z]: the tool frame with x reversed.
+HALF_TURN_Z = np.array([0.0, 0.0, 0.0, 1.0])
 
 
 class ParallelClipping(Primitive):
@@ -43,7 +45,10 @@ class ParallelClipping(Primitive):
     unloaded (higher, the tension would pull up on a weak clip: 2 f sin of
     the slope), and an unclipped one still rests on the jaws; if the force
     line reaches the seat, the cable is in, and the model gets a fixed point
-    at the clip.
+    at the clip. Either tool axis of a gripper may run along the cable: one
+    whose x points from the right gripper towards the left is controlled
+    through its tool frame turned half about z, so no gripper turns by more
+    than a quarter (a half turn would wrap the cable round a fingertip).
 
     Failure: ``not_clipped`` if no snap is felt down to the steepest bend or
     the table, or the cable came out when lifted (the paper's one clipping
@@ -91,7 +96,24 @@ class ParallelClipping(Primitive):
         sense = 1.0 if float(rel @ info.slot) >= 0.0 else -1.0
         self._rel_dir = sense * info.slot  # p_left - p_right direction
         self._q = orientation_along(-self._rel_dir)  # x from left towards right
+        # either tool axis may run along the cable: a gripper whose x points
+        # from right to left is controlled through its frame turned half
+        # about its own z, so that neither is turned by more than a quarter
+        self._flip = tuple(
+            float(rotate(g.orientation, [1.0, 0.0, 0.0]) @ -self._rel_dir) < 0.0
+            for g in (obs.left, obs.right)
+        )
         self._since = obs.time
+
+    def _tool_frames(self, obs: Observation) -> DualPose:
+        """Both grippers' poses, a flipped one's frame turned half about its z."""
+        poses = current_pose(obs)
+        left, right = poses.left, poses.right
+        if self._flip[0]:
+            left = Pose(left.position, multiply(left.orientation, HALF_TURN_Z))
+        if self._flip[1]:
+            right = Pose(right.position, multiply(right.orientation, HALF_TURN_Z))
+        return DualPose(left, right)
 
     def _desired(self, obs: Observation) -> CoordinatedPose:
         distance = float(np.linalg.norm(obs.left.position - obs.right.position))
@@ -108,7 +130,7 @@ class ParallelClipping(Primitive):
         sensor = obs.gripper(ctx.estimator.arm)
         height = self.sensing.update(obs.time, sensor.position, state.direction, state.taut)
         force = self._base_force
-        now = coordinated_pose(current_pose(obs))
+        now = coordinated_pose(self._tool_frames(obs))
         if self.phase == "align":
             if norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003:
                 self.phase, self._since = "push", obs.time
@@ -137,7 +159,7 @@ class ParallelClipping(Primitive):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
         return Command(
             ctx.controller.coordinated(
-                current_pose(obs),
+                self._tool_frames(obs),
                 self._desired(obs),
                 force,
                 state.tension,
