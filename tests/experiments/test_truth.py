@@ -12,6 +12,7 @@ from tautwire.experiments.truth import (
     CONTACT_TOLERANCE,
     FilterSample,
     StepWatch,
+    _direction,
     check_contacts,
     check_step,
     coverage,
@@ -20,7 +21,7 @@ from tautwire.experiments.truth import (
 from tautwire.model import PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
 from tautwire.sim import PegSpec, SimWorld
-from tautwire.sim.ground_truth import GroundTruth
+from tautwire.sim.ground_truth import GroundTruth, TautSpan
 from tests.sim.scenes import anchor_and_gripper, rest
 
 ANCHOR = np.array([0.0, 0.0, 0.12])
@@ -231,3 +232,34 @@ def test_coverage_counts_converged_samples_within_3_std_on_every_axis() -> None:
         np.diag([1e-6, 4e-6, 1e-6]),
     )
     assert with_p.nees == pytest.approx(4.0) and samples[0].nees is None
+
+
+def test_the_span_from_a_peg_turns_with_its_tangent_not_with_the_axis() -> None:
+    """A span leaving a peg of 12 mm tangentially along +x: its direction is +x, while the
+    direction from the axis to where it enters the fingers is atan(12 / 100) = 6.8 deg off."""
+    rho = 0.012
+    entry = np.array([0.1, rho, 0.0])
+    span = TautSpan(
+        "W",
+        "left",
+        "P",
+        np.zeros(3),
+        np.array([0.0, rho, 0.0]),
+        entry / 2,
+        entry + np.array([0.02, 0.0, 0.0]),
+        2.0,
+        True,
+        3,
+        9,
+        0.12,
+        (3, 8),
+        entry,
+    )
+    z = np.array([0.0, 0.0, 1.0])
+    round_direction = _direction(span, z, round_contact=True)
+    assert round_direction is not None and np.allclose(round_direction, [1.0, 0.0, 0.0])
+    point_direction = _direction(span, z, round_contact=False)
+    assert point_direction is not None
+    assert math.degrees(math.atan2(point_direction[1], point_direction[0])) == pytest.approx(
+        math.degrees(math.atan(rho / 0.1))
+    )

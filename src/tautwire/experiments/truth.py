@@ -16,14 +16,16 @@ tension held (A, D)
     end. (The weight-compensated tension D controls is the tension along the
     chord, which the span's mean tension is for a shallow sag.)
 rotation done (I)
-    The cable truly turned by the angle about its true contact, to within
-    :data:`ANGLE_TOLERANCE`: the direction from the true contact (a peg's
-    axis point) to the held vertex, projected onto the plane normal to the
-    axis, sampled every 10 control periods (a rotation turns at most 0.04
-    rad in between, far below the half turn that unwrapping needs). This is
-    the direction the taut cable takes once it has settled: a soft cable
-    bows behind a moving gripper, and the direction of its middle lags the
-    gripper by several degrees at the end of a step.
+    The cable truly turned by the angle, to within :data:`ANGLE_TOLERANCE`:
+    the chord of the span's free straight part, from where it leaves its
+    fixture (a peg: the tangent point on the circle the cable keeps round
+    it) to where it enters the fingers, projected onto the plane normal to
+    the axis, sampled every 10 control periods (a rotation turns at most
+    0.04 rad in between, far below the half turn that unwrapping needs). Not
+    the direction of the cable's middle, which on a soft cable bows behind a
+    moving gripper by several degrees, nor the direction to the tool centre
+    point, which a cable leaving through a fingertip misses by up to
+    atan(20 mm / span).
 clipped (C, F)
     The cable sits in the clip's jaws (:meth:`GroundTruth.clipped`).
 grasped (H)
@@ -283,17 +285,57 @@ def judge_model(checks: list[ContactCheck]) -> TruthCheck:
     return TruthCheck(True, "; ".join(c.text() for c in trusted))
 
 
-def _direction(span: TautSpan, axis: FloatArray) -> FloatArray | None:
-    """Unit direction from the span's true contact to the gripper, normal to ``axis``, or None."""
+def _direction(span: TautSpan, axis: FloatArray, round_contact: bool) -> FloatArray | None:
+    """Unit direction of the span's free straight part towards the gripper, normal to ``axis``.
+
+    The chord from where the span leaves its fixture to where it enters the
+    fingers (:attr:`TautSpan.entry`): the direction the taut cable takes, a
+    soft cable's bow behind a moving gripper aside (a chord between two
+    points of the cable does not bow), and the one the force at the fingers
+    measures. From an anchor (or a clip) it starts at the contact; from a
+    peg at the tangent point, seen from the entry vertex, on the circle the
+    cable keeps about the peg's axis (its radius measured at the vertex where
+    the cable leaves the peg). None without a contact.
+    """
     if span.contact is None:
         return None
-    d = span.held - span.contact
+    start = span.contact
+    if round_contact:
+        start = _tangent_point(span.entry, span.contact, span.leave, axis)
+    d = span.entry - start
     d = d - axis * float(axis @ d)
     n = float(np.linalg.norm(d))
     if n < 1e-6:
         return None
     out: FloatArray = d / n
     return out
+
+
+def _tangent_point(
+    held: FloatArray, centre: FloatArray, leave: FloatArray, axis: FloatArray
+) -> FloatArray:
+    """The tangent point from ``held`` (any point) on the circle about ``centre`` through ``leave``.
+
+    The circle lies in the plane normal to ``axis``; of the two tangent
+    points the one nearer ``leave`` is taken.
+    """
+
+    def planar(v: FloatArray) -> FloatArray:
+        out: FloatArray = v - axis * float(axis @ v)
+        return out
+
+    g, r_leave = planar(held - centre), planar(leave - centre)
+    radius, dist = float(np.linalg.norm(r_leave)), float(np.linalg.norm(g))
+    if dist <= radius or radius < 1e-9:
+        return leave.copy()
+    u = g / dist
+    w = np.cross(axis, u)
+    beta = math.acos(radius / dist)
+    candidates = [
+        centre + radius * (math.cos(beta) * u + sign * math.sin(beta) * w) for sign in (1.0, -1.0)
+    ]
+    best: FloatArray = min(candidates, key=lambda c: float(np.linalg.norm(planar(c - leave))))
+    return best
 
 
 class StepWatch:
@@ -335,7 +377,10 @@ class StepWatch:
         self.span = self.truth.span(self.cable, self.arm)
         if self.span is None or self.axis is None:
             return
-        d = _direction(self.span, self.axis)
+        round_contact = (
+            self.span.fixture is not None and self.truth.fixture_type(self.span.fixture) == "peg"
+        )
+        d = _direction(self.span, self.axis, round_contact)
         if d is None:
             return
         if self._previous is not None:

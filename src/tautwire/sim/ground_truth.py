@@ -75,6 +75,9 @@ class TautSpan:
         rest_length: Rest length [m] of the span (along the cable between
             the two vertices).
         segments: The free segments' indices, first and past the last.
+        entry: The free span's vertex nearest the gripper, where the cable
+            enters the fingers' zone (:data:`GRIP_ZONE`) [m]: with ``leave``
+            the ends of the straight, free part of the span.  # (3,)
     """
 
     cable: str
@@ -90,6 +93,7 @@ class TautSpan:
     held_vertex: int
     rest_length: float
     segments: tuple[int, int]
+    entry: FloatArray
 
 
 class GroundTruth:
@@ -291,6 +295,7 @@ class GroundTruth:
             h,
             float(abs(arc[h] - arc[i])),
             segments,
+            pts[segments[1] if i < h else segments[0]].copy(),
         )
 
     def span_tension(self, span: TautSpan) -> tuple[float, bool]:
