@@ -71,6 +71,14 @@ class SingleArmTension(Primitive):
        success band; success once the tension has stayed in the band for
        ``hold_time``.
 
+    Measured (``bench/stiffness.py``, 80 scenes over the envelope of issue
+    10: 0.15-1 m, 10-1500 N/m, slack 2-15 %, noise 0.03-0.1 N, 1.5-4 N, an
+    anchor or a peg): D takes 3.5-10.5 s of simulated time (median 5.6 s;
+    learning 2.4-7.4 s); on the anchors k_hat ends within 3.2 % of the
+    cable's k in 46 of 47 (the 47th wrapped the cable round a finger pad
+    while aligning the tool axis); Table I's D scenes take 3.6-7.6 s
+    (median 5.1 s), k_hat within 1.9 % of k L / l in 30 of 30.
+
     The controller's gain uses the latest k_hat known to 20 %
     (:attr:`ElasticityEstimator.k_trusted`; before that, the prior), so a
     fit from the first few samples cannot make it unstable.
