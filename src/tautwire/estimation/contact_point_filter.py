@@ -15,8 +15,9 @@ started this way gives exactly the batch least-squares answer over all
 samples (tested).
 
 Change detection: see :mod:`tautwire.estimation.contact_change_detector`.
-On a declared change the filter restarts with a batch least squares over the
-gated run with a weak prior on the current line (centred at the point of the
+On a declared change the filter restarts (a round contact keeps its estimate:
+its gated lines cannot be refitted without their sides) with a batch least
+squares over the gated run with a weak prior on the current line (centred at the point of the
 line nearest the old estimate, isotropic std equal to its distance from the
 gripper); the sample reports ``changed=True`` and its index is appended to
 :attr:`ContactPointFilter.changes`.
@@ -247,6 +248,18 @@ class ContactPointFilter:
         self._recent.clear()
         self.detector.reset()
 
+    def start(self, x0: ArrayLike, P0: ArrayLike) -> None:
+        """Start running at once from a prior (x0 [m], P0 [m^2]), forgetting buffered samples."""
+        self.reset()
+        self.x = np.asarray(x0, dtype=float).reshape(3).copy()
+        self.P = np.asarray(P0, dtype=float).reshape(3, 3).copy()
+        self.running = True
+
+    def predict(self) -> None:
+        """Let one step pass with nothing measured: P = F P F' + Q."""
+        if self.running:
+            self.P = self.P + self.Q
+
     def snapshot(self) -> FilterState:
         """A copy of the current estimate (e.g. before a change is accepted)."""
         return FilterState(
@@ -399,6 +412,13 @@ class ContactPointFilter:
 
     def _restart(self, first_gated: int, p: FloatArray, f_chord: FloatArray) -> None:
         self.replaced = self.snapshot()
+        if self.radius is not None:
+            # a round contact's gated lines come without the sides they pass
+            # on: they cannot be refitted here; the change is declared, the
+            # estimate kept, and the caller tests the change on its own lines
+            self._recent.clear()
+            self.detector.reset()
+            return
         samples = [(pp, ff, vv) for (i, pp, ff, vv) in self._recent if i >= first_gated]
         self.restart(
             np.array([s[0] for s in samples]),

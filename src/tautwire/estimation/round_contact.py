@@ -24,7 +24,7 @@ FloatArray = NDArray[np.float64]
 #: Prior std [m] of the radius R of a round contact: the cable's bending keeps
 #: its centre line millimetres farther out than peg radius + cable radius
 #: (12-16 mm around the 10.5 mm of scenarios/peg-change.yaml).
-RADIUS_STD = 0.005
+RADIUS_STD = 0.002
 
 #: How far [m] a peg may sit from its board-design position, and a line from
 #: its nominal tangent (the cable's bending and the fingers move it by

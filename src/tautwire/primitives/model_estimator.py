@@ -45,7 +45,7 @@ from tautwire.estimation.round_contact import (
 from tautwire.model import FeaturePoint, PathGraph
 from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
-from tautwire.model.vector3 import norm3
+from tautwire.model.vector3 import cross3, norm3
 from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
@@ -283,7 +283,7 @@ class ModelEstimator:
         if (
             point is self._filter_point
             and accepted is not None
-            and max(accepted.P[0, 0], accepted.P[1, 1], accepted.P[2, 2]) <= self.trusted_std**2
+            and self._largest_variance(accepted) <= self.trusted_std**2
             and self._agrees_with_design()
         ):
             return accepted.x.copy()
@@ -321,7 +321,10 @@ class ModelEstimator:
         A gripper needs none (its position is measured). When the gripper's
         edge comes to bear on another point than the filter's (a clip was
         added, the cable was grasped, a contact was removed), the filter
-        starts afresh for that point.
+        starts afresh for that point: from nothing, or for a peg of the
+        board design from its design position (std ``DESIGN_TOLERANCE``):
+        lines tangent to a peg do not meet at its axis, so the blind start
+        of a point contact would begin a radius or more off it.
         """
         if c is None or self.graph.points[c].kind == "gripper":
             return False
@@ -331,6 +334,8 @@ class ModelEstimator:
             self._pending = None
             self._filter_point = point
             self._design = None if point.label == "estimated" else point.position.copy()
+            if self._design is not None and point.label in self.round_fixtures:
+                self.contact_filter.start(self._design, DESIGN_TOLERANCE**2 * np.eye(3))
             self._sum_p[:] = 0.0
             self._sum_f[:] = 0.0
             self._sum_tau[:] = 0.0
@@ -407,6 +412,12 @@ class ModelEstimator:
         self._window_start = None
         kf = self.contact_filter
         peg = self._round_contact()
+        point = self._filter_point
+        if peg is None and point is not None and point.label in self.round_fixtures:
+            # a peg's lines are tangent to it: without a rotation's sense they
+            # cannot be placed on its axis; they do not count
+            kf.predict()
+            return False
         if peg is not None and kf.running:
             # a peg: the filter estimates its radius too, from the raw lines
             axis, sense, radius = peg
@@ -493,9 +504,24 @@ class ModelEstimator:
                 )
         return False
 
+    def _largest_variance(self, state: FilterState) -> float:
+        """The largest variance [m^2] of an estimate on any axis that matters.
+
+        Every axis for a point contact; for a round contact (a peg) only
+        those normal to its axis: where along the axis the cable bears is
+        the cable's height, which horizontal lines do not fix and nothing
+        needs.
+        """
+        P = state.P
+        if state.radius is not None and self.rotation is not None:
+            axis = self.rotation[0]
+            normal = np.eye(3) - np.outer(axis, axis)
+            P = normal @ P @ normal
+        return float(np.max(np.diag(P)))
+
     def _was_trusted(self, state: FilterState) -> bool:
         """Whether the model used ``state`` as its contact (std and design gate)."""
-        if not state.running or float(np.max(np.diag(state.P))) > self.trusted_std**2:
+        if not state.running or self._largest_variance(state) > self.trusted_std**2:
             return False
         return self._design is None or norm3(state.x - self._design) <= DESIGN_GATE
 
@@ -700,7 +726,15 @@ class ModelEstimator:
         return False
 
     def _round_contact(self) -> tuple[FloatArray, float, float] | None:
-        """(axis, sense, R) while rotating about a round contact of the design, else None."""
+        """(axis, sense, R) while rotating about a round contact of the design, else None.
+
+        ``sense`` is the sense in which the cable bends round the peg, right-
+        handed about ``axis``: the one that the route from the point before
+        the peg (the anchor behind it), round the peg, to the gripper turns
+        by (a rotation may unwind the cable as well as wind it); where that
+        route is straight, the rotation's own sense (a peg that the taut span
+        sweeps onto is wound in the sense of the sweep).
+        """
         c = self.contact_index
         if self.rotation is None or c is None:
             return None
@@ -708,6 +742,27 @@ class ModelEstimator:
         if fixture is None:
             return None
         axis, sense = self.rotation
+        g = self.gripper_index
+        step = -1 if c < g else 1
+        points = self.graph.points
+        before = next(
+            (
+                points[i]
+                for i in range(c + step, -1 if step < 0 else len(points), step)
+                if points[i].is_constrained
+            ),
+            None,
+        )
+        if before is not None:
+            peg = fixture[0]
+            inward = peg - before.position
+            outward = points[g].position - peg
+            inward -= axis * float(axis @ inward)
+            outward -= axis * float(axis @ outward)
+            turn = float(axis @ cross3(inward, outward))
+            scale = norm3(inward) * norm3(outward)
+            if scale > 0.0 and abs(turn) > math.sin(math.radians(10.0)) * scale:
+                sense = math.copysign(1.0, turn) * (1.0 if step < 0 else -1.0)
         return axis, sense, fixture[1]
 
     def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
