@@ -56,6 +56,7 @@ def _run(half: str, **fields: Any) -> dict[str, Any]:
         "wrong_trusted": 0,
         "k_hat": 100.0,
         "k_true": 100.0,
+        "k_nominal": 100.0,
         "k_ratio": 1.0,
         "nees_samples": 10,
         "nees_within": 9,

@@ -254,6 +254,7 @@ def test_the_span_from_a_peg_turns_with_its_tangent_not_with_the_axis() -> None:
         0.12,
         (3, 8),
         entry,
+        0.05,
     )
     z = np.array([0.0, 0.0, 1.0])
     round_direction = _direction(span, z, round_contact=True)
@@ -263,3 +264,60 @@ def test_the_span_from_a_peg_turns_with_its_tangent_not_with_the_axis() -> None:
     assert math.degrees(math.atan2(point_direction[1], point_direction[0])) == pytest.approx(
         math.degrees(math.atan(rho / 0.1))
     )
+
+
+def _swing_along_the_span(world: SimWorld, truth: GroundTruth, watch: StepWatch) -> float:
+    """Swing the gripper +-0.5 mm along the span (2 s a period, as D's set point); return the
+    slope of the true tension against the gripper's displacement along the span [N/m]."""
+    span = truth.span("W", "left")
+    assert span is not None
+    u = span.entry - span.leave
+    u /= np.linalg.norm(u)
+    p0 = world.gripper_pose("left")[0].copy()
+    xs, fs = [], []
+    for k in range(round(4.0 / world.control_period)):
+        t = k * world.control_period
+        twist = np.zeros(12)
+        twist[0:3] = 0.0005 * math.pi * math.cos(math.pi * t) * u  # 0.5 mm sin(pi t)
+        world.set_twist(twist)
+        world.step()
+        watch.tick(truth.time)
+        xs.append(float((world.gripper_pose("left")[0] - p0) @ u))
+        fs.append(watch.tensions[-1])
+    watch.finish()
+    return float(np.polyfit(xs[250:], fs[250:], 1)[0])
+
+
+@pytest.mark.parametrize("bend", [0.0, 1.2])
+def test_the_true_stiffness_is_what_the_gripper_feels(bend: float) -> None:
+    """From an anchor (no peg), and round a peg the cable bends round by 1.2 rad (where it
+    sticks or slips as its friction decides), the measured true spring constant is the
+    slope of the true tension against the gripper's displacement along the span."""
+    anchor, peg = np.array([0.0, 0.0, 0.12]), np.array([0.15, 0.05, 0.12])
+    u_in = (peg - anchor) / np.linalg.norm(peg - anchor)
+    out = math.atan2(u_in[1], u_in[0]) + bend
+    gripper = peg + 0.2 * np.array([math.cos(out), math.sin(out), 0.0])
+    fixtures = (PegSpec("P", [0.15, 0.05, 0.05], 0.006, 0.12),) if bend else ()
+    length = float(np.linalg.norm(peg - anchor)) + 0.2 + 0.0085 * bend
+    world = anchor_and_gripper(
+        list(anchor), list(gripper), length, 200.0, fixtures=fixtures, via=("P",) if bend else ()
+    )
+    truth = GroundTruth(world)
+    span = truth.span("W", "left")
+    assert span is not None
+    pull = span.entry - span.leave
+    twist = np.zeros(12)
+    twist[0:3] = 0.01 * pull / np.linalg.norm(pull)
+    world.set_twist(twist)
+    while truth.span("W", "left").tension < 2.0:  # type: ignore[union-attr]
+        world.step()
+    rest(world, 0.3)
+    watch = StepWatch(truth, "W", "left")
+    slope = _swing_along_the_span(world, truth, watch)
+    assert watch.span is not None and watch.span.fixture == ("P" if bend else "A")
+    truth_k = watch.measured_stiffness()
+    assert truth_k is not None and truth_k == pytest.approx(slope, rel=0.05)
+    nominal = watch.edge_stiffness
+    assert nominal is not None
+    if not bend:  # from an anchor the closed form holds
+        assert nominal == pytest.approx(200.0) and truth_k == pytest.approx(200.0, rel=0.03)

@@ -24,8 +24,11 @@ over the force limit
     The force the cable truly exerted on the gripper (noise-free, every
     control period) went above the scenario's limit (15 N).
 k_hat error
-    |k_hat / k - 1| at the end of a successful D, k the true spring constant
-    the gripper pulls against (the cable from its anchor to the gripper).
+    |k_hat / k - 1| at the end of a successful D, k the spring constant the
+    gripper truly pulls against, measured in the simulator over D's last
+    set-point swing (:meth:`StepWatch.measured_stiffness`: from an anchor
+    k L / L_s; round a peg the cable slides or sticks as its friction
+    decides). ``k_nominal`` in the CSV is k L / L_s.
 NEES coverage
     Over every contact filter iteration after convergence (largest std at
     most the estimator's trusted_std, 10 mm), the fraction whose error is
@@ -109,7 +112,8 @@ def score_run(scene: Any, result: Any, half: str, fault: dict[str, Any] | None) 
     clean = bool(result.success and contact_ok and not made_up and not wrong_trusted)
     tension = audit.watches[0] if audit.watches else None
     k_hat = None if tension is None else tension.k_hat
-    k_true = None if tension is None else tension.edge_stiffness
+    k_true = None if tension is None else tension.measured_stiffness()
+    k_nominal = None if tension is None else tension.edge_stiffness
     ratio = k_hat / k_true if k_hat is not None and k_true else None
     converged = [s for s in audit.samples if s.trusted]
     if result.success:
@@ -156,6 +160,7 @@ def score_run(scene: Any, result: Any, half: str, fault: dict[str, Any] | None) 
         "wrong_trusted": len(wrong_trusted),
         "k_hat": k_hat,
         "k_true": k_true,
+        "k_nominal": k_nominal,
         "k_ratio": ratio,
         "nees_samples": len(converged),
         "nees_within": sum(1 for s in converged if s.within_3std),
@@ -197,6 +202,7 @@ def _failed_run(
         "wrong_trusted": 0,
         "k_hat": None,
         "k_true": None,
+        "k_nominal": None,
         "k_ratio": None,
         "nees_samples": 0,
         "nees_within": 0,

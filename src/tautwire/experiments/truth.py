@@ -66,6 +66,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.model import PathGraph
+from tautwire.model.sag_length import sag_excess_length
 from tautwire.primitives import PrimitiveContext
 from tautwire.robot import Arm
 from tautwire.sim.ground_truth import GroundTruth, TautSpan
@@ -82,8 +83,13 @@ TENSION_TOLERANCE = 0.15
 TENSION_WINDOW = 0.5
 #: Allowed error [rad] of the true angle turned against the commanded one.
 ANGLE_TOLERANCE = 0.1
+#: Window [s] over which a step's end shows whether the cable slides round a peg (one swing
+#: of D's set point).
+STIFFNESS_WINDOW = 2.0
 #: Control periods between two samples of the true span direction.
 DIRECTION_EVERY = 10
+#: The world's vertical (pegs stand along it).
+Z_AXIS = np.array([0.0, 0.0, 1.0])
 #: Primitives whose success claims a tension (letters).
 TENSION_PRIMITIVES = ("A", "D")
 #: Primitives whose success claims a clipped cable (letters).
@@ -312,12 +318,17 @@ def _direction(span: TautSpan, axis: FloatArray, round_contact: bool) -> FloatAr
 
 
 def _tangent_point(
-    held: FloatArray, centre: FloatArray, leave: FloatArray, axis: FloatArray
+    held: FloatArray,
+    centre: FloatArray,
+    leave: FloatArray,
+    axis: FloatArray,
+    radius: float | None = None,
 ) -> FloatArray:
-    """The tangent point from ``held`` (any point) on the circle about ``centre`` through ``leave``.
+    """The tangent point from ``held`` (any point) on a circle about ``centre``.
 
-    The circle lies in the plane normal to ``axis``; of the two tangent
-    points the one nearer ``leave`` is taken.
+    The circle lies in the plane normal to ``axis``, with ``radius`` (default:
+    through ``leave``); of the two tangent points the one nearer ``leave`` is
+    taken.
     """
 
     def planar(v: FloatArray) -> FloatArray:
@@ -325,7 +336,9 @@ def _tangent_point(
         return out
 
     g, r_leave = planar(held - centre), planar(leave - centre)
-    radius, dist = float(np.linalg.norm(r_leave)), float(np.linalg.norm(g))
+    if radius is None:
+        radius = float(np.linalg.norm(r_leave))
+    dist = float(np.linalg.norm(g))
     if dist <= radius or radius < 1e-9:
         return leave.copy()
     u = g / dist
@@ -365,6 +378,11 @@ class StepWatch:
         self.times: list[float] = []
         self.tensions: list[float] = []
         self.taut: list[bool] = []
+        #: The span's elastic length [m] with each tension sample: the chord
+        #: from where it leaves its fixture (a peg: the tangent point on the
+        #: circle of peg + cable radius) to the tool centre point, plus the
+        #: length its sag takes (:func:`sag_excess_length`).
+        self.lengths: list[float] = []
         self.turned = 0.0
         self.span: TautSpan | None = None
         #: The robot's stiffness estimate k_hat [N/m] when the step ended.
@@ -395,19 +413,65 @@ class StepWatch:
             self._sample_span()
         if self.span is None:
             return
+        self._record(time)
+
+    def _record(self, time: float) -> None:
+        assert self.span is not None
         tension, taut = self.truth.span_tension(self.span)
         self.times.append(time)
         self.tensions.append(tension)
         self.taut.append(taut)
+        tcp = self.truth.gripper_position(self.arm)
+        start = self.span.leave
+        fixture, contact = self.span.fixture, self.span.contact
+        if (
+            fixture is not None
+            and contact is not None
+            and self.truth.fixture_type(fixture) == "peg"
+        ):
+            # a smooth tangent point (the leave point jumps as vertices pass the peg)
+            radius = self.truth.peg_radius(fixture) + self.truth.cable_radius(self.cable)
+            start = _tangent_point(tcp, contact, self.span.leave, Z_AXIS, radius)
+        chord = tcp - start
+        rho = self.truth.mass_per_length(self.cable)
+        self.lengths.append(float(np.linalg.norm(chord)) + sag_excess_length(chord, tension, rho))
 
     def finish(self) -> None:
         """Take the last sample (the step's end state)."""
         self._sample_span()
         if self.span is not None:
-            tension, taut = self.truth.span_tension(self.span)
-            self.tensions.append(tension)
-            self.taut.append(taut)
-            self.times.append(self.times[-1] if self.times else 0.0)
+            self._record(self.times[-1] if self.times else 0.0)
+
+    def measured_stiffness(self, window: float = STIFFNESS_WINDOW) -> float | None:
+        """The spring constant [N/m] the gripper truly pulls against at the step's end.
+
+        The least-squares slope of the span's true tension against its true
+        elastic length (:attr:`lengths`) over the step's last ``window`` [s]
+        of taut samples: D swings its set point by +-5 % with a 2 s period,
+        so the window holds one whole swing. What k_hat claims, measured:
+        from an anchor it is k L / L_s; round a peg the cable slides, sticks
+        or both as its friction (0.2) and the bend decide, and the contact
+        gives a little, so no closed form holds there. None with fewer than
+        50 samples or under 20 um of swing.
+        """
+        if not self.times:
+            return None
+        end = self.times[-1]
+        picked = [
+            (length, f)
+            for t, f, length, taut in zip(
+                self.times, self.tensions, self.lengths, self.taut, strict=True
+            )
+            if t >= end - window and taut
+        ]
+        if len(picked) < 50:
+            return None
+        x = np.array([p[0] for p in picked])
+        y = np.array([p[1] for p in picked])
+        if float(np.ptp(x)) < 2e-5:
+            return None
+        slope = float(np.polyfit(x, y, 1)[0])
+        return slope if slope > 0.0 else None
 
     def mean_tension(self, window: float = TENSION_WINDOW) -> float | None:
         """Mean true span tension [N] over the last ``window`` [s], None without samples."""
@@ -419,23 +483,18 @@ class StepWatch:
 
     @property
     def edge_stiffness(self) -> float | None:
-        """True spring constant [N/m] the gripper pulls against now, None without a span.
+        """The nominal spring constant [N/m] of the span, k L / L_s (None without a span).
 
-        k L / L_s, with L_s the rest length from the anchored start of the
-        cable to the held vertex (pegs let the cable slide round them with
-        little friction, so the whole length from the anchor stretches), or
-        the span's own rest length for a cable without an anchored start.
+        L_s is the span's rest length from where it leaves its fixture (an
+        anchor; where it touches a peg) to the held vertex: exact from an
+        anchor; round a peg it holds only while the cable sticks there (see
+        :meth:`measured_stiffness`).
         """
-        if self.span is None:
+        span = self.span
+        if span is None or span.contact is None or span.rest_length <= 0.0:
             return None
-        arc = self.truth.arc_lengths(self.cable)
-        if self.truth.starts_anchored(self.cable):
-            rest = abs(float(arc[self.span.held_vertex] - arc[0]))
-        else:
-            rest = self.span.rest_length
-        if rest <= 0.0:
-            return None
-        return self.truth.stiffness(self.cable) * float(arc[-1]) / rest
+        length = float(self.truth.arc_lengths(self.cable)[-1])
+        return self.truth.stiffness(self.cable) * length / span.rest_length
 
 
 def check_step(

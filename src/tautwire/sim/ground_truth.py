@@ -63,21 +63,25 @@ class TautSpan:
             when the cable touches none before the gripper (a free end).
         contact: The fixture's true contact point [m] as
             :class:`FixtureContact` defines it (None without a fixture).  # (3,)
-        leave: The cable vertex where the span leaves the fixture [m]
-            (the anchor itself, or the last vertex touching a peg or a clip).  # (3,)
+        leave: Where the span leaves the fixture [m]: the anchor itself, or
+            the point of the last segment touching a peg (nearest its axis)
+            or a clip (nearest its seat).  # (3,)
         middle: The cable vertex half way along the span [m].  # (3,)
         held: The held vertex [m] (at the tool centre point).  # (3,)
         tension: Mean elastic tension [N] of the span's free segments (those
             outside the gripper's fingers, see :data:`GRIP_ZONE`).
         taut: Whether every free segment of the span is stretched (tension > 0).
-        leave_vertex: Index of the ``leave`` vertex.
+        leave_vertex: Index of the vertex at the span's fixture end: the
+            anchor's, or the far end (from the gripper) of the segment that
+            touches a peg or a clip.
         held_vertex: Index of the ``held`` vertex.
-        rest_length: Rest length [m] of the span (along the cable between
-            the two vertices).
+        rest_length: Rest length [m] of the span, from ``leave`` to the
+            held vertex along the cable.
         segments: The free segments' indices, first and past the last.
         entry: The free span's vertex nearest the gripper, where the cable
             enters the fingers' zone (:data:`GRIP_ZONE`) [m]: with ``leave``
             the ends of the straight, free part of the span.  # (3,)
+        leave_arc: Rest arc length [m] of ``leave`` from the cable's start.
     """
 
     cable: str
@@ -94,6 +98,7 @@ class TautSpan:
     rest_length: float
     segments: tuple[int, int]
     entry: FloatArray
+    leave_arc: float
 
 
 class GroundTruth:
@@ -161,6 +166,14 @@ class GroundTruth:
     def stiffness(self, cable: str) -> float:
         """True axial spring constant k [N/m] of the whole cable."""
         return float(self._index(cable).spec.stiffness)
+
+    def cable_radius(self, cable: str) -> float:
+        """Radius [m] of ``cable``."""
+        return float(self._index(cable).spec.radius)
+
+    def mass_per_length(self, cable: str) -> float:
+        """Mass per length [kg/m] of ``cable``."""
+        return float(self._index(cable).spec.mass_per_length)
 
     def starts_anchored(self, cable: str) -> bool:
         """Whether ``cable``'s first vertex is fixed to an anchor."""
@@ -246,36 +259,50 @@ class GroundTruth:
     def span(self, cable: str, arm: Arm) -> TautSpan | None:
         """The span of ``cable`` from the last fixture before ``arm``'s gripper to it.
 
-        Scans the cable from the held vertex towards its start for the first
-        vertex at a fixture that the cable is in contact with (MuJoCo
-        contacts): a peg (vertex within the peg's radius plus the cable's
-        radius plus ``NEAR`` of its axis) or a clip (vertex within its
-        slot); else the anchored start. None when ``arm`` does not hold
-        ``cable``.
+        Scans the cable's segments from the held vertex towards its start
+        for the first one at a fixture that the cable is in contact with
+        (MuJoCo contacts): a peg (the segment passes within the peg's radius
+        plus the cable's radius plus :data:`NEAR` of its axis, below its top)
+        or a clip (the segment passes its seat within the slot); else the
+        anchored start. A stretched soft cable's vertices may lie centimetres
+        apart, so segments, not vertices, are tested. None when ``arm`` does
+        not hold ``cable``.
         """
         held = self._world.held(arm)
         if held is None or held[0] != cable:
             return None
         idx = self._index(cable)
         pts = self.polyline(cable)
+        arc = self._world.scene.discretizations[cable].arc
         h = held[1]
         step = -1 if h > 0 else 1
         touched = [
             self._world.spec.fixture(name) for name, c in self._contact_pairs() if c == cable
         ]
         fixture: str | None = None
-        i = h + step
-        while 0 <= i < len(pts):
-            fixture = self._touching(pts[i], idx.spec.radius, touched)
-            if fixture is not None:
+        # segments from the held vertex outwards: (near vertex, far vertex)
+        j = h
+        leave, leave_arc, i = pts[0], 0.0, 0
+        while 0 <= j + step < len(pts):
+            near, far = j, j + step
+            hit = self._touching(pts[near], pts[far], idx.spec.radius, touched)
+            if hit is not None:
+                fixture, t = hit
+                leave = pts[near] + t * (pts[far] - pts[near])
+                leave_arc = float(arc[near] + t * (arc[far] - arc[near]))
+                i = far
                 break
-            i += step
+            j += step
         if fixture is None:
             i = 0 if step < 0 else len(pts) - 1
+            leave, leave_arc = pts[i], float(arc[i])
             if step < 0 and idx.spec.start is not None:
                 fixture = idx.spec.start
-        arc = self._world.scene.discretizations[cable].arc
         segments = _free_segments(arc, i, h)
+        if i != h and fixture is not None and i != (0 if step < 0 else len(pts) - 1):
+            # the segment at the fixture may be partly wrapped: not in the free span
+            lo, hi = segments
+            segments = (min(lo + 1, hi), hi) if i < h else (lo, max(hi - 1, lo))
         tension = self._segment_tensions(cable, segments)
         contact = None
         if fixture is not None:
@@ -286,16 +313,17 @@ class GroundTruth:
             arm,
             fixture,
             contact,
-            pts[i].copy(),
+            leave.copy(),
             pts[(i + h) // 2].copy(),
             pts[h].copy(),
             float(np.mean(tension)),
             bool(np.all(tension > 0.0)),
             i,
             h,
-            float(abs(arc[h] - arc[i])),
+            float(abs(arc[h] - leave_arc)),
             segments,
             pts[segments[1] if i < h else segments[0]].copy(),
+            leave_arc,
         )
 
     def span_tension(self, span: TautSpan) -> tuple[float, bool]:
@@ -324,25 +352,37 @@ class GroundTruth:
         return pairs
 
     def _touching(
-        self, p: FloatArray, cable_radius: float, fixtures: list[AnchorSpec | PegSpec | ClipSpec]
-    ) -> str | None:
-        """Which of ``fixtures`` (pegs, clips) a cable vertex at ``p`` [m] lies at, if any."""
+        self,
+        p: FloatArray,
+        q: FloatArray,
+        cable_radius: float,
+        fixtures: list[AnchorSpec | PegSpec | ClipSpec],
+    ) -> tuple[str, float] | None:
+        """Which of ``fixtures`` (pegs, clips) the segment p -> q touches, and where.
+
+        Returns the fixture's name and the segment parameter t in [0, 1] of
+        the point nearest the fixture (a peg's axis, horizontally; a clip's
+        seat), or None.
+        """
         for f in fixtures:
             if isinstance(f, PegSpec):
-                d = float(np.hypot(p[0] - f.position[0], p[1] - f.position[1]))
+                t = _nearest_parameter(p[:2], q[:2], f.position[:2])
+                point = p + t * (q - p)
+                d = float(np.hypot(point[0] - f.position[0], point[1] - f.position[1]))
                 top = f.position[2] + f.height
-                if d <= f.radius + cable_radius + NEAR and p[2] <= top + cable_radius:
-                    return f.name
+                if d <= f.radius + cable_radius + NEAR and point[2] <= top + cable_radius:
+                    return f.name, t
             elif isinstance(f, ClipSpec):
-                q = p - f.position
-                along = float(q @ f.direction)
-                across = math.sqrt(max(float(q[0] ** 2 + q[1] ** 2) - along**2, 0.0))
+                t = _nearest_parameter(p, q, f.position)
+                r = p + t * (q - p) - f.position
+                along = float(r @ f.direction)
+                across = math.sqrt(max(float(r[0] ** 2 + r[1] ** 2) - along**2, 0.0))
                 design = self._world.scene.clips[f.name]
                 if (
                     abs(along) <= 0.5 * self._world.options.clip_length
                     and across <= design.wall_gap + design.jaw_radius + NEAR
                 ):
-                    return f.name
+                    return f.name, t
         return None
 
     def contacts(self) -> tuple[FixtureContact, ...]:
@@ -437,3 +477,12 @@ def _free_segments(arc: FloatArray, leave: int, held: int) -> tuple[int, int]:
         far = lo if held == hi else hi - 1
         return far, far + 1
     return free[0], free[-1] + 1
+
+
+def _nearest_parameter(p: FloatArray, q: FloatArray, c: FloatArray) -> float:
+    """The parameter t in [0, 1] of the point of segment p -> q nearest ``c`` (any dimension)."""
+    d = q - p
+    dd = float(d @ d)
+    if dd <= 1e-18:
+        return 0.0
+    return float(np.clip(float((c - p) @ d) / dd, 0.0, 1.0))

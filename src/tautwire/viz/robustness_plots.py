@@ -91,8 +91,8 @@ def plot_error_vs_yaw(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
 def plot_stiffness(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
     """k_hat / k at the end of D against the true k (log x), with the +-10 % band.
 
-    k is the spring constant the gripper pulls against (the cable from its
-    anchor); filled markers are successes, open ones failures.
+    k is the spring constant the gripper truly pulls against, measured in the
+    simulator at the end of D; filled markers are successes, open ones failures.
     """
     fig = Figure(figsize=(8, 5), constrained_layout=True)
     ax = fig.add_subplot()
@@ -134,7 +134,7 @@ def plot_stiffness(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
     ax.set_xlim(8.0, 2000.0)
     ax.set_xticks([10, 30, 100, 300, 1000])
     ax.set_xticklabels(["10", "30", "100", "300", "1000"])
-    ax.set_xlabel("true stiffness k [N/m]")
+    ax.set_xlabel("true stiffness k the gripper pulls against [N/m]")
     ax.set_ylabel("k_hat / k at the end of D")
     ax.set_title("Stiffness estimate against the true stiffness")
     ax.grid(alpha=0.3, which="both")
