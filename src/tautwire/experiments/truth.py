@@ -389,15 +389,25 @@ class StepWatch:
         self.k_hat: float | None = None
         self._ticks = 0
         self._previous: FloatArray | None = None
+        self._rho = truth.mass_per_length(cable)
+        self._peg_radius: float | None = None
+        self._start = np.zeros(3)
         self._sample_span()
 
     def _sample_span(self) -> None:
         self.span = self.truth.span(self.cable, self.arm)
-        if self.span is None or self.axis is None:
+        if self.span is None:
             return
-        round_contact = (
-            self.span.fixture is not None and self.truth.fixture_type(self.span.fixture) == "peg"
+        fixture = self.span.fixture
+        round_contact = fixture is not None and self.truth.fixture_type(fixture) == "peg"
+        self._peg_radius = (
+            self.truth.peg_radius(fixture) + self.truth.cable_radius(self.cable)
+            if round_contact and fixture is not None
+            else None
         )
+        self._start = self.span.leave
+        if self.axis is None:
+            return
         d = _direction(self.span, self.axis, round_contact)
         if d is None:
             return
@@ -406,10 +416,15 @@ class StepWatch:
             self.turned += math.atan2(cross, float(self._previous @ d))
         self._previous = d
 
-    def tick(self, time: float) -> None:
-        """Record the truth after one control period ending at ``time`` [s]."""
+    def tick(self, time: float, resample: bool = False) -> None:
+        """Record the truth after one control period ending at ``time`` [s].
+
+        The span itself is sampled every :data:`DIRECTION_EVERY` periods, or
+        now with ``resample`` (the contact filter just ran).
+        """
         self._ticks += 1
-        if self._ticks % DIRECTION_EVERY == 0:
+        if resample or self._ticks >= DIRECTION_EVERY:
+            self._ticks = 0
             self._sample_span()
         if self.span is None:
             return
@@ -422,19 +437,16 @@ class StepWatch:
         self.tensions.append(tension)
         self.taut.append(taut)
         tcp = self.truth.gripper_position(self.arm)
-        start = self.span.leave
-        fixture, contact = self.span.fixture, self.span.contact
-        if (
-            fixture is not None
-            and contact is not None
-            and self.truth.fixture_type(fixture) == "peg"
-        ):
+        start = self._start
+        if self._peg_radius is not None and self.span.contact is not None:
             # a smooth tangent point (the leave point jumps as vertices pass the peg)
-            radius = self.truth.peg_radius(fixture) + self.truth.cable_radius(self.cable)
-            start = _tangent_point(tcp, contact, self.span.leave, Z_AXIS, radius)
+            start = _tangent_point(
+                tcp, self.span.contact, self.span.leave, Z_AXIS, self._peg_radius
+            )
         chord = tcp - start
-        rho = self.truth.mass_per_length(self.cable)
-        self.lengths.append(float(np.linalg.norm(chord)) + sag_excess_length(chord, tension, rho))
+        self.lengths.append(
+            math.sqrt(float(chord @ chord)) + sag_excess_length(chord, tension, self._rho)
+        )
 
     def finish(self) -> None:
         """Take the last sample (the step's end state)."""
@@ -657,8 +669,12 @@ class FilterWatch:
     samples: list[FilterSample] = field(default_factory=list)
     _iterations: int = 0
 
-    def tick(self, ctx: PrimitiveContext, time: float) -> None:
-        """Sample if the filter ran since the last call."""
+    def ran(self, ctx: PrimitiveContext) -> bool:
+        """Whether the contact filter ran since the last sample."""
+        return ctx.estimator.iterations != self._iterations
+
+    def tick(self, ctx: PrimitiveContext, time: float, span: TautSpan | None = None) -> None:
+        """Sample if the filter ran since the last call, against ``span`` (default: sampled now)."""
         estimator = ctx.estimator
         if estimator.iterations == self._iterations:
             return
@@ -666,7 +682,8 @@ class FilterWatch:
         kf = estimator.contact_filter
         if not kf.running:
             return
-        span = self.truth.span(self.cable, self.arm)
+        if span is None:
+            span = self.truth.span(self.cable, self.arm)
         if span is None or span.fixture is None or span.contact is None:
             return
         true_point = span.contact
@@ -738,8 +755,13 @@ class RunAudit:
     def tick(self, ctx: PrimitiveContext) -> None:
         """Sample the truth after a control period (at the simulator's time)."""
         time = self.truth.time
+        ran = self.filter.ran(ctx)
         if self.watches:
-            self.watches[-1].tick(time)
+            watch = self.watches[-1]
+            watch.tick(time, resample=ran)  # the filter's sample shares the span just taken
+            if ran:
+                self.filter.tick(ctx, time, watch.span)
+                return
         self.filter.tick(ctx, time)
 
     def end_step(self, success: bool, ctx: PrimitiveContext) -> TruthCheck:

@@ -19,6 +19,7 @@ from tautwire.sim.spec import AnchorSpec, ClipSpec, PegSpec
 from tautwire.sim.world import SimWorld
 
 FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
 
 #: A cable vertex this close [m] to a fixture's surface (beyond the cable's
 #: radius) that the cable is in contact with counts as touching it: MuJoCo's
@@ -123,6 +124,7 @@ class GroundTruth:
             for n in names:
                 self._geom_fixture[mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_GEOM, n)] = f.name
         self._flex_cable = {idx.flex_id: name for name, idx in world._cables.items()}
+        self._springs: dict[str, tuple[IntArray, FloatArray, FloatArray]] = {}
 
     @property
     def cable_names(self) -> tuple[str, ...]:
@@ -155,12 +157,18 @@ class GroundTruth:
 
     def tensions(self, cable: str) -> FloatArray:
         """Elastic tension [N] of each segment, k_e max(0, length - rest), shape (N,)."""
-        idx = self._index(cable)
-        m, d = self._world._model, self._world._data
-        length = d.ten_length[idx.tendon_ids]
-        rest = m.tendon_lengthspring[idx.tendon_ids, 1]
-        k = m.tendon_stiffness[idx.tendon_ids]
-        tension: FloatArray = k * np.maximum(0.0, length - rest)
+        springs = self._springs.get(cable)
+        if springs is None:  # the tendons' rest lengths and stiffnesses are constants
+            idx = self._index(cable)
+            m = self._world._model
+            springs = (
+                idx.tendon_ids,
+                m.tendon_lengthspring[idx.tendon_ids, 1].copy(),
+                m.tendon_stiffness[idx.tendon_ids].copy(),
+            )
+            self._springs[cable] = springs
+        ids, rest, k = springs
+        tension: FloatArray = k * np.maximum(0.0, self._world._data.ten_length[ids] - rest)
         return tension
 
     def stiffness(self, cable: str) -> float:
@@ -199,7 +207,7 @@ class GroundTruth:
 
     def gripper_position(self, arm: Arm) -> FloatArray:
         """The true tool centre point [m] of ``arm``'s gripper."""
-        return self._world.gripper_pose(arm)[0]
+        return self._world._grippers[arm].position.copy()
 
     def held(self, arm: Arm) -> tuple[str, int] | None:
         """(cable, vertex) that ``arm`` truly holds, or None."""
@@ -280,19 +288,14 @@ class GroundTruth:
             self._world.spec.fixture(name) for name, c in self._contact_pairs() if c == cable
         ]
         fixture: str | None = None
-        # segments from the held vertex outwards: (near vertex, far vertex)
-        j = h
         leave, leave_arc, i = pts[0], 0.0, 0
-        while 0 <= j + step < len(pts):
-            near, far = j, j + step
-            hit = self._touching(pts[near], pts[far], idx.spec.radius, touched)
-            if hit is not None:
-                fixture, t = hit
-                leave = pts[near] + t * (pts[far] - pts[near])
-                leave_arc = float(arc[near] + t * (arc[far] - arc[near]))
-                i = far
-                break
-            j += step
+        hit = self._first_touching(pts, h, step, idx.spec.radius, touched)
+        if hit is not None:  # segment (near, far = near + step) touches ``fixture`` at t
+            fixture, near, t = hit
+            far = near + step
+            leave = pts[near] + t * (pts[far] - pts[near])
+            leave_arc = float(arc[near] + t * (arc[far] - arc[near]))
+            i = far
         if fixture is None:
             i = 0 if step < 0 else len(pts) - 1
             leave, leave_arc = pts[i], float(arc[i])
@@ -332,7 +335,7 @@ class GroundTruth:
         Cheaper than :meth:`span` when the span's vertices are known.
         """
         tension = self._segment_tensions(span.cable, span.segments)
-        return float(np.mean(tension)), bool(np.all(tension > 0.0))
+        return float(tension.sum()) / len(tension), bool((tension > 0.0).all())
 
     def _segment_tensions(self, cable: str, segments: tuple[int, int]) -> FloatArray:
         lo, hi = segments
@@ -351,39 +354,54 @@ class GroundTruth:
                 pairs.add((self._geom_fixture[geom], self._flex_cable[flex]))
         return pairs
 
-    def _touching(
+    def _first_touching(
         self,
-        p: FloatArray,
-        q: FloatArray,
+        pts: FloatArray,
+        held: int,
+        step: int,
         cable_radius: float,
         fixtures: list[AnchorSpec | PegSpec | ClipSpec],
-    ) -> tuple[str, float] | None:
-        """Which of ``fixtures`` (pegs, clips) the segment p -> q touches, and where.
+    ) -> tuple[str, int, float] | None:
+        """The first segment from the held vertex outwards that touches one of ``fixtures``.
 
-        Returns the fixture's name and the segment parameter t in [0, 1] of
-        the point nearest the fixture (a peg's axis, horizontally; a clip's
-        seat), or None.
+        A segment touches a peg where its point nearest the axis
+        (horizontally) lies within the peg's radius plus the cable's plus
+        :data:`NEAR` of it and below the peg's top; a clip where its point
+        nearest the seat lies within the slot. Returns the fixture's name,
+        the segment's vertex nearer the held one and the segment parameter t
+        in [0, 1] of that point, or None.
         """
+        if not fixtures:
+            return None
+        order = np.arange(held, 0, -1) if step < 0 else np.arange(held, len(pts) - 1)
+        near = order
+        p, q = pts[near], pts[near + step]  # (S, 3) each
+        best: tuple[int, str, float] | None = None
         for f in fixtures:
             if isinstance(f, PegSpec):
-                t = _nearest_parameter(p[:2], q[:2], f.position[:2])
-                point = p + t * (q - p)
-                d = float(np.hypot(point[0] - f.position[0], point[1] - f.position[1]))
+                t = _nearest_parameters(p[:, :2], q[:, :2], f.position[:2])
+                point = p + t[:, None] * (q - p)
+                d = np.hypot(point[:, 0] - f.position[0], point[:, 1] - f.position[1])
                 top = f.position[2] + f.height
-                if d <= f.radius + cable_radius + NEAR and point[2] <= top + cable_radius:
-                    return f.name, t
+                hits = (d <= f.radius + cable_radius + NEAR) & (point[:, 2] <= top + cable_radius)
             elif isinstance(f, ClipSpec):
-                t = _nearest_parameter(p, q, f.position)
-                r = p + t * (q - p) - f.position
-                along = float(r @ f.direction)
-                across = math.sqrt(max(float(r[0] ** 2 + r[1] ** 2) - along**2, 0.0))
+                t = _nearest_parameters(p, q, f.position)
+                r = p + t[:, None] * (q - p) - f.position
+                along = r @ f.direction
+                across = np.sqrt(np.maximum(r[:, 0] ** 2 + r[:, 1] ** 2 - along**2, 0.0))
                 design = self._world.scene.clips[f.name]
-                if (
-                    abs(along) <= 0.5 * self._world.options.clip_length
-                    and across <= design.wall_gap + design.jaw_radius + NEAR
-                ):
-                    return f.name, t
-        return None
+                hits = (np.abs(along) <= 0.5 * self._world.options.clip_length) & (
+                    across <= design.wall_gap + design.jaw_radius + NEAR
+                )
+            else:
+                continue
+            found = np.flatnonzero(hits)
+            if len(found) and (best is None or int(found[0]) < best[0]):
+                best = (int(found[0]), f.name, float(t[found[0]]))
+        if best is None:
+            return None
+        k, name, t_hit = best
+        return name, int(near[k]), t_hit
 
     def contacts(self) -> tuple[FixtureContact, ...]:
         """Every fixture in contact with a cable, with its true contact point."""
@@ -479,10 +497,10 @@ def _free_segments(arc: FloatArray, leave: int, held: int) -> tuple[int, int]:
     return free[0], free[-1] + 1
 
 
-def _nearest_parameter(p: FloatArray, q: FloatArray, c: FloatArray) -> float:
-    """The parameter t in [0, 1] of the point of segment p -> q nearest ``c`` (any dimension)."""
+def _nearest_parameters(p: FloatArray, q: FloatArray, c: FloatArray) -> FloatArray:
+    """Per segment p_i -> q_i (rows), the parameter t in [0, 1] of its point nearest ``c``."""
     d = q - p
-    dd = float(d @ d)
-    if dd <= 1e-18:
-        return 0.0
-    return float(np.clip(float((c - p) @ d) / dd, 0.0, 1.0))
+    dd = np.einsum("ij,ij->i", d, d)
+    t = np.einsum("ij,ij->i", c - p, d) / np.maximum(dd, 1e-18)
+    out: FloatArray = np.clip(t, 0.0, 1.0)
+    return out
