@@ -46,6 +46,7 @@ from tautwire.model import FeaturePoint, PathGraph
 from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
 from tautwire.model.vector3 import cross3, norm3
+from tautwire.primitives.low_pass import LowPass
 from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
@@ -58,6 +59,10 @@ SAME_CONTACT = 0.03
 #: Largest distance [m] between a fixture's design position and a trusted estimate of it.
 DESIGN_GATE = 0.03
 
+#: A filter sample pulling below this fraction of the slowly followed pull is skipped.
+WEAK_PULL = 0.5
+#: Time constant [s] with which the pull level follows the samples.
+PULL_LEVEL_TIME = 1.0
 #: A hypothesised contact change is accepted once its lines spread this far [rad].
 HYPOTHESIS_SPREAD = math.radians(5.0)
 #: ... and its batch fit's largest std is below this [m] (the tolerance a found contact has) ...
@@ -237,6 +242,8 @@ class ModelEstimator:
         self._consistent = 0  # iterations in a row whose line fitted the accepted contact
         self._unresolved_run = 0
         self._last_fitting: FloatArray | None = None  # line point of the last fused sample
+        #: The slowly followed pull [N] of the filter's samples.
+        self._pull_level: LowPass[float] = LowPass(PULL_LEVEL_TIME)
 
     # ----------------------------------------------------------------- graph
     @property
@@ -416,6 +423,13 @@ class ModelEstimator:
         if peg is None and point is not None and point.label in self.round_fixtures:
             # a peg's lines are tangent to it: without a rotation's sense they
             # cannot be placed on its axis; they do not count
+            kf.predict()
+            return False
+        # a pull that drops well below the tension it had (the cable caught
+        # on a fingertip, a shake) pulls askew: its line says nothing of the contact
+        pull = norm3(f_mean)
+        level = self._pull_level.update(time, pull) if pull >= self.taut_tension else None
+        if level is not None and pull < WEAK_PULL * level:
             kf.predict()
             return False
         if peg is not None and kf.running:

@@ -12,6 +12,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -19,6 +20,11 @@ from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
 from tautwire.robot import Arm, Command, Observation
+
+#: Largest direction change [rad] a sample's noise may add to the angle turned.
+MAX_DIRECTION_NOISE = 0.02
+#: The angle turned counts only while the tension is at least this fraction of its set point.
+TRACK_TENSION = 0.5
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -39,7 +45,11 @@ class RotateAroundFeaturePoint(Primitive):
     declared the circle continues about the new contact.
 
     Success: the cable's direction (from the contact to the gripper, as the
-    force measures it) has turned ``angle`` about ``axis``. Failure:
+    force measures it) has turned ``angle`` about ``axis``, counted on the
+    low-passed direction while the tension is at least ``TRACK_TENSION`` of
+    its set point; each sample adds at most what the speed limit can turn it
+    in a period (a direction that jumps, from a shake or a cable caught at
+    the fingers, is not a turn). Failure:
     ``slipped`` if the tension stays below a fifth of its set point for
     ``slack_time`` after having been taut, or once the route to the fixed
     point is longer than an intact cable allows
@@ -108,6 +118,7 @@ class RotateAroundFeaturePoint(Primitive):
         self._slack.reset()
         self._ever_taut = False
         self._axis = ToolAxis()
+        self._direction: LowPass[np.ndarray] = LowPass()
         self._travel = TravelBound(ctx.limits.max_force)
         if self._default_timeout:
             # the nominal time at the speed the gripper's speed limit allows on this circle
@@ -124,13 +135,18 @@ class RotateAroundFeaturePoint(Primitive):
         me = obs.gripper(self.arm)
         # the angle turned is the cable direction's: it does not jump when the
         # contact estimate does, and its noise does not add up (increments telescope)
-        radial = -state.direction
-        radial = radial - self.axis * float(self.axis @ radial)
-        if state.taut:
-            self._track_angle(radial)
+        radius = self._radius(me.position, state.contact)
+        if state.taut and state.tension >= TRACK_TENSION * self.force:
+            # the low-passed direction, only while the cable pulls near its set
+            # point (a cable caught at the fingers pulls weakly and askew); it
+            # turns no faster than the gripper moves it: a sample whose
+            # direction jumps adds at most that, and its jump back takes it away
+            radial = -self._direction.update(obs.time, state.direction)
+            radial = radial - self.axis * float(self.axis @ radial)
+            step = 3.0 * self._speed_limit(ctx) * ctx.control_period / max(radius, 0.02)
+            self._track_angle(radial, step + MAX_DIRECTION_NOISE)
         # set point ahead on the circle: P control with gain k_p then moves
         # tangentially at speed * radius (feed-forward through the set point)
-        radius = self._radius(me.position, state.contact)
         speed = self.speed
         limit = self._speed_limit(ctx)
         if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
@@ -172,11 +188,11 @@ class RotateAroundFeaturePoint(Primitive):
         """The gripper speed [m/s] the circle is planned for: 90 % of the limit."""
         return 0.9 * float(min(ctx.limits.max_linear_speed))
 
-    def _track_angle(self, radial: np.ndarray) -> None:
+    def _track_angle(self, radial: np.ndarray, max_step: float) -> None:
         if self._previous is not None and norm3(radial) > 1e-6:
             cross = float(self.axis @ cross3(self._previous, radial))
             dot = float(self._previous @ radial)
-            self.turned += math.atan2(cross, dot)
+            self.turned += min(max(math.atan2(cross, dot), -max_step), max_step)
         if norm3(radial) > 1e-6:
             self._previous = radial.copy()
 
