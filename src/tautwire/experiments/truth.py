@@ -679,28 +679,30 @@ class FilterWatch:
         if estimator.iterations == self._iterations:
             return
         self._iterations = estimator.iterations
-        kf = estimator.contact_filter
-        if not kf.running:
+        # the estimate as the model reports it (a change under test does not
+        # count until accepted), with its reported covariance
+        estimate = estimator.contact_estimate()
+        if estimate is None:
             return
         if span is None:
             span = self.truth.span(self.cable, self.arm)
         if span is None or span.fixture is None or span.contact is None:
             return
         true_point = span.contact
-        if self.truth.fixture_type(span.fixture) == "peg" and kf.radius is None:
+        if self.truth.fixture_type(span.fixture) == "peg" and estimate.radius is None:
             true_point = _peg_leave_point(span, span.contact)
-        std = np.sqrt(np.maximum(np.diag(kf.P), 0.0))
+        std = np.sqrt(np.maximum(np.diag(estimate.covariance), 0.0))
         self.samples.append(
             FilterSample(
                 time,
                 estimator.iterations,
                 span.fixture,
-                kf.radius is not None,
-                kf.x.copy(),
+                estimate.radius is not None,
+                estimate.position,
                 np.asarray(true_point, dtype=float).copy(),
                 std,
-                float(np.max(std)) <= estimator.trusted_std,
-                kf.P.copy(),
+                estimate.trusted,
+                estimate.covariance,
             )
         )
 

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from collections import deque
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -96,6 +97,27 @@ CONFIRMED_RUN = 25
 #: average out over samples, so it is added to the reported covariance of an
 #: estimated contact.
 SYSTEMATIC_LINE_ERROR = 1e-3
+#: The same for a peg's axis [m]: the cable's centre line keeps a few mm more
+#: than peg radius + cable radius from it, changing as the coarse cable wraps,
+#: and a partial wrap leaves axis and radius correlated (measured on the
+#: robustness campaign's pegs: 3-10 mm off).
+ROUND_LINE_ERROR = 4e-3
+
+
+class ContactEstimate(NamedTuple):
+    """A contact estimate as the model reports it (:meth:`ModelEstimator.contact_estimate`).
+
+    Attributes:
+        position: Estimated position [m] (a peg: the point on its axis).  # (3,)
+        covariance: Reported covariance [m^2].  # (3, 3)
+        radius: A peg's estimated radius [m], None for a point contact.
+        trusted: Whether the model uses the estimate.
+    """
+
+    position: FloatArray
+    covariance: FloatArray
+    radius: float | None
+    trusted: bool
 
 
 def _nearest_on_segment(x: FloatArray, a: FloatArray, b: FloatArray) -> FloatArray:
@@ -295,6 +317,27 @@ class ModelEstimator:
         ):
             return accepted.x.copy()
         return point.position.copy()
+
+    def contact_estimate(self) -> ContactEstimate | None:
+        """The filter's estimate of its point as the model reports it, or None.
+
+        The accepted estimate (a hypothesised change does not count until
+        accepted) with its reported covariance: the filter's P plus the line
+        model's systematic error (``SYSTEMATIC_LINE_ERROR``, for a peg
+        ``ROUND_LINE_ERROR``), which does not average out over samples.
+        ``trusted`` says whether the model uses it (std within
+        ``trusted_std`` on the axes that matter, near its design).
+        """
+        accepted = self._accepted_estimate()
+        if accepted is None:
+            return None
+        floor = ROUND_LINE_ERROR if accepted.radius is not None else SYSTEMATIC_LINE_ERROR
+        trusted = (
+            self._largest_variance(accepted) <= self.trusted_std**2 and self._agrees_with_design()
+        )
+        return ContactEstimate(
+            accepted.x.copy(), accepted.P + floor**2 * np.eye(3), accepted.radius, trusted
+        )
 
     def _accepted_estimate(self) -> FilterState | None:
         """The filter's estimate of its point, as accepted (None: no estimate yet).
@@ -829,8 +872,10 @@ class ModelEstimator:
             and self.graph.points[c] is self._filter_point
             and self._agrees_with_design()
         ):
-            constraints[c] = accepted.x.copy()
-            self.graph.points[c].covariance = accepted.P + SYSTEMATIC_LINE_ERROR**2 * np.eye(3)
+            reported = self.contact_estimate()
+            assert reported is not None
+            constraints[c] = reported.position
+            self.graph.points[c].covariance = reported.covariance
         update_by_constraints(self.graph, constraints)
         for pt in self.graph.points:
             if pt.kind == "gripper":
