@@ -4,11 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from tautwire.control import coordinated_pose
-from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.pair_alignment import PairAlignment
 from tautwire.primitives.parallel_tension import held_between_grippers
 from tautwire.primitives.sliding import SlidingPrimitive
 from tautwire.robot import Observation
@@ -22,6 +21,14 @@ class ParallelSliding(SlidingPrimitive):
     w_abs = w_rel = 0 under motion control, and a constant relative velocity
     along the cable between the grippers slides ``slide_arm`` along it.
 
+    Before the cable is tensioned for sliding, each gripper lays its tool
+    axis, +x or -x, whichever is nearer, along the line between the
+    grippers, their distance held
+    (:class:`~tautwire.primitives.pair_alignment.PairAlignment`, as A): a
+    cable bent round a fingertip reads a wrong tension, and its friction
+    through bent fingers is not the fingers' 2 mu F_grip. After A the pair
+    is aligned already and this takes no time.
+
     Args:
         slide_arm: The gripper the cable slides through.
         distance: How far [m] the grippers part.
@@ -33,8 +40,8 @@ class ParallelSliding(SlidingPrimitive):
     letter = "B"
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
-        """Hold the absolute pose and the relative orientation of the start."""
-        self._desired = coordinated_pose(current_pose(obs))
+        """Plan the pair's alignment: the start's absolute position, its line between them."""
+        self._pair = PairAlignment(obs)
         self._start_distance = self._distance(obs)
         super().on_start(obs, ctx)
         if not held_between_grippers(ctx):
@@ -46,14 +53,18 @@ class ParallelSliding(SlidingPrimitive):
         """The travel counts from here."""
         self._start_distance = self._distance(obs)
 
+    def aligned(self, obs: Observation, ctx: PrimitiveContext, state: TensionState) -> bool:
+        """Whether both tool axes lie along the line between the grippers (settled)."""
+        return self._pair.settled(obs)
+
     def tension_motion(
-        self, obs: Observation, ctx: PrimitiveContext, state: TensionState
+        self, obs: Observation, ctx: PrimitiveContext, state: TensionState, aligned: bool
     ) -> np.ndarray:
-        """A's coordinated force control with f_d = f_slid."""
+        """A's coordinated force control with f_d = f_slid once aligned; else the turn alone."""
         return ctx.controller.coordinated(
-            current_pose(obs),
-            self._desired,
-            self.friction_force,
+            self._pair.tool_frames(obs),
+            self._pair.desired,
+            self.friction_force if aligned else None,
             state.tension,
             ctx.estimator.elasticity.k_trusted,
         )
@@ -71,8 +82,8 @@ class ParallelSliding(SlidingPrimitive):
     ) -> np.ndarray:
         """Constant relative speed along the cable while moving, else hold."""
         return ctx.controller.coordinated(
-            current_pose(obs),
-            self._desired,
+            self._pair.tool_frames(obs),
+            self._pair.desired,
             None,
             0.0,
             relative_speed=self.speed if moving else 0.0,

@@ -6,11 +6,10 @@ import math
 
 import numpy as np
 
-from tautwire.control import coordinated_pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.primitives.arm_control import current_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.pair_alignment import PairAlignment
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.tension_judge import TensionJudge
 from tautwire.robot import Command, Observation
@@ -26,12 +25,23 @@ class ParallelTension(Primitive):
     """Primitive A: both grippers hold the cable; coordinated control tensions it.
 
     Coordinated hybrid control (:meth:`HybridController.coordinated`): the
-    absolute pose and the relative orientation hold their start values, the
-    grippers' distance is under the adaptive inverse-damping force control
-    (k_f = lambda / k_hat) with the tension measured by the sensing wrist.
+    absolute position and the direction between the grippers hold their
+    start values, the grippers' distance is under the adaptive
+    inverse-damping force control (k_f = lambda / k_hat) with the tension
+    measured by the sensing wrist.
+
+    Either tool axis may run along the cable, and a gripper may start at
+    any yaw (:class:`~tautwire.primitives.pair_alignment.PairAlignment`):
+    first each gripper turns its tool axis, +x or -x, whichever is nearer,
+    onto the line between the grippers by the shortest arc, their distance
+    held (a cable bent round a fingertip reads a wrong tension and rubs
+    the pad). The turn only shortens the cable's route, never stretches it.
+    Only once both axes lie within ``ALIGNED`` of the line (for
+    ``ALIGNED_TIME`` if they had to turn) does the force control run, the
+    elasticity estimate learn and the success test count.
 
     Success: the tension stays within ``tolerance`` of ``force`` for
-    ``hold_time``. Failure: ``no_contact`` when the grippers part by
+    ``hold_time``, aligned. Failure: ``no_contact`` when the grippers part by
     ``max_travel`` without the cable becoming taut (it is not held by both);
     ``timeout``.
 
@@ -66,32 +76,36 @@ class ParallelTension(Primitive):
         self._ever_taut = False
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
-        """Hold the start's absolute pose; check that both grippers hold the cable."""
+        """Plan the pair's alignment; check that both grippers hold the cable."""
         if not held_between_grippers(ctx):
             self.outcome = Outcome.failure(
                 "precondition", "parallel tension needs the cable held by both grippers"
             )
-        ctx.estimator.learn_elasticity = True
+        ctx.estimator.learn_elasticity = False  # until aligned
         ctx.estimator.rotation = None
-        self._desired = coordinated_pose(current_pose(obs))
+        self._pair = PairAlignment(obs)
         self._start_distance = float(np.linalg.norm(obs.left.position - obs.right.position))
         self._judge = TensionJudge(self.force, self.tolerance, self.hold_time)
         self._ever_taut = False
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
-        """Update the model, run the coordinated hybrid controller, judge."""
+        """Update the model; align, then run the coordinated hybrid controller and judge."""
         state = ctx.estimator.update(obs)
         if self.outcome.done:
             return Command()
         self._ever_taut |= state.taut
+        aligned = self._pair.settled(obs)
+        ctx.estimator.learn_elasticity = aligned
         twist = ctx.controller.coordinated(
-            current_pose(obs),
-            self._desired,
-            self.force,
+            self._pair.tool_frames(obs),
+            self._pair.desired,
+            self.force if aligned else None,
             state.tension,
             ctx.estimator.elasticity.k_trusted,
         )
-        if self._judge.update(obs.time, state.tension):
+        if not aligned:
+            self._judge.reset()
+        elif self._judge.update(obs.time, state.tension):
             self.outcome = Outcome.success(
                 f"tension {self._judge.smoothed:.2f} N held {self.hold_time:g} s"
             )

@@ -8,6 +8,12 @@ force so that it equals the desired sliding friction f_slid; the integral
 absorbs the unknown friction coefficient. After ``distance`` the gripper
 grips firmly again, and the model records how much cable slid through
 (edge lengths at rest: the travel minus the change of the elastic stretch).
+
+The sliding gripper's tool axis must lie along the cable first: a cable
+bent round a fingertip presses on the fingertip's edge as well as on the
+pads, so its friction is not 2 mu F_grip, and its tension reads wrong. The
+tensioning before the slide therefore ends only once the subclass says the
+grippers are aligned (:meth:`SlidingPrimitive.aligned`).
 """
 
 from __future__ import annotations
@@ -45,8 +51,14 @@ Phase = Literal["tension", "slide", "regrip"]
 class SlidingPrimitive(Primitive):
     """Base of B and E: slide ``distance`` at friction ``friction_force``.
 
-    Subclasses give the motion (:meth:`motion`), the travel so far
-    (:meth:`travel`) and which grasp point moves (:meth:`hold_shift`).
+    Subclasses give the motion (:meth:`motion`), the tensioning before it
+    (:meth:`tension_motion`, which also lays the tool axes along the cable),
+    whether the tool axes lie along the cable (:meth:`aligned`), the travel
+    so far (:meth:`travel`) and which grasp point moves (:meth:`hold_shift`).
+
+    Phases: *tension* (firm grip, the tension brought to ``friction_force``
+    and held within 15 % for 0.2 s, aligned all that time), *slide*,
+    *regrip*.
 
     Success: the grippers travelled ``distance`` with the cable sliding
     (low-passed tension within ``tolerance`` of ``friction_force`` on average
@@ -129,10 +141,18 @@ class SlidingPrimitive(Primitive):
         """Hook: remember what the motion needs at the start."""
 
     @abstractmethod
+    def aligned(self, obs: Observation, ctx: PrimitiveContext, state: TensionState) -> bool:
+        """Hook: whether the holding grippers' tool axes lie along the cable (once per period)."""
+
+    @abstractmethod
     def tension_motion(
-        self, obs: Observation, ctx: PrimitiveContext, state: TensionState
+        self, obs: Observation, ctx: PrimitiveContext, state: TensionState, aligned: bool
     ) -> np.ndarray:
-        """Hook: the individual twist (12,) that brings the tension to f_slid, firmly gripped."""
+        """Hook: the individual twist (12,) that brings the tension to f_slid, firmly gripped.
+
+        It also turns the tool axes onto the cable; ``aligned``: whether
+        they lie along it (:meth:`aligned` this period).
+        """
 
     @abstractmethod
     def motion(
@@ -157,13 +177,18 @@ class SlidingPrimitive(Primitive):
         smoothed = self._tension.update(obs.time, tension)
         if self.phase == "tension":
             # first the tension that the sliding will keep, with a firm grip:
-            # a soft cable would otherwise slide slack for most of the way
-            if self._tension_judge.update(obs.time, tension):
+            # a soft cable would otherwise slide slack for most of the way;
+            # and the tool axes along the cable, or the friction is not 2 mu F_grip
+            aligned = self.aligned(obs, ctx, state)
+            if not aligned:
+                self._tension_judge.reset()
+            elif self._tension_judge.update(obs.time, tension):
                 self.phase = "slide"
                 self._slide_start = obs.time
                 self._start_tension = tension
                 self.begin(obs, ctx, state)
-            return self._command(self.tension_motion(obs, ctx, state), GripperCommand("hold"))
+            twist = self.tension_motion(obs, ctx, state, aligned)
+            return self._command(twist, GripperCommand("hold"))
         if self.phase == "slide":
             travelled = self.travel(obs)
             moving = travelled < self.distance
