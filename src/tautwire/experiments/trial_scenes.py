@@ -10,6 +10,18 @@ workspace), and writes a scenario: the preparatory steps the primitive needs
 (e.g. D before I: a cable must be taut before it can be rotated), then the
 primitive under test. The robot's initial stiffness guess stays the generic
 100 N/m, so it is off by up to ten times.
+
+Start yaw (issue 10, as the robustness campaign): every gripper that holds
+the cable at the start gets its own start yaw about z, uniform in
+[-pi, pi), independent of the cable's direction: tool x may point along the
+cable, across it, or back at the fixture or the other gripper. The
+simulator lays a held cable straight through the fingers along tool x and
+then to where it goes (:mod:`tautwire.sim.route`), so such a cable starts
+bent round a fingertip; the drawn slack is measured along that laid route
+(:func:`~tautwire.experiments.robustness_scene.anchor_route_length`,
+:func:`pair_route_length`), not as a straight distance, so that no grasp
+starts the cable stretched. A gripper that does not hold the cable at the
+start (H's grasping arm, a parked arm) keeps its orientation rule.
 """
 
 from __future__ import annotations
@@ -24,6 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.experiments.robustness_scene import PAD_EXIT, anchor_route_length
 from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
 from tautwire.model.quaternion import multiply
 from tautwire.primitives.clip_sensing import PivotPress
@@ -68,15 +81,29 @@ class TrialScene:
     inputs: dict[str, float | str]
 
     def run(self, spec: TrialSpec, t0: float | None = None) -> TrialResult:
-        """Simulate the scenario; the trial's outcome is its first failure or success."""
+        """Simulate the scenario; the trial's outcome is its first failure or success.
+
+        A step that reported success while the simulator disagrees (its
+        ``truth``) makes the trial a failure with cause ``false_success``,
+        whatever came after: the worst defect a trial can show.
+        """
         from tautwire.experiments.run_scenario import run_scenario
 
         start = time.perf_counter() if t0 is None else t0
         result, _, _ = run_scenario(self.scenario, spec.seed)
         steps = result.steps
         failed = next((s for s in steps if s["outcome"] != "success"), None)
+        false = next(
+            (s for s in steps if s["outcome"] == "success" and not s["truth"]["agrees"]), None
+        )
         last = steps[-1] if steps else None
-        if failed is not None:
+        if false is not None:
+            outcome, cause = "failure", "false_success"
+            detail = (
+                f"step {false['letter']} reported success ({false['detail']}) but the simulator"
+                f" disagrees: {false['truth']['detail']}"
+            )
+        elif failed is not None:
             tested = failed is last and len(steps) == len(self.scenario.task)
             where = "" if tested else f" (in the preparatory step {failed['letter']})"
             outcome, cause = "failure", failed["cause"] or "error"
@@ -134,10 +161,85 @@ def _inside(p: np.ndarray, margin: float = MARGIN) -> bool:
     return bool(np.all(p >= lo) and np.all(p <= hi))
 
 
-def _yaw_quaternion(direction: np.ndarray) -> list[float]:
-    """[w, x, y, z] of a tool frame whose x-axis is the horizontal ``direction``."""
-    yaw = math.atan2(float(direction[1]), float(direction[0]))
+def _yaw_quaternion(yaw: float) -> list[float]:
+    """[w, x, y, z] of a tool frame turned by ``yaw`` [rad] about the world z-axis."""
     return [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)]
+
+
+def _horizontal(yaw: float) -> FloatArray:
+    """The horizontal unit vector at azimuth ``yaw`` [rad] (a yawed tool's x-axis)."""
+    return np.array([math.cos(yaw), math.sin(yaw), 0.0])
+
+
+def _azimuth(direction: FloatArray) -> float:
+    return math.atan2(float(direction[1]), float(direction[0]))
+
+
+def _yaw_to(yaw: float, direction: FloatArray) -> float:
+    """``yaw`` [rad] against the azimuth of ``direction``, wrapped to [-pi, pi)."""
+    return (yaw - _azimuth(direction) + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def _bisect(length: Callable[[float], float], target: float, low: float, high: float) -> float:
+    """The r in [low, high] at which the increasing ``length(r)`` is ``target`` (clamped)."""
+    for _ in range(40):  # to 1 nm over 1 m
+        mid = 0.5 * (low + high)
+        if length(mid) < target:
+            low = mid
+        else:
+            high = mid
+    return 0.5 * (low + high)
+
+
+def pair_route_length(
+    left: FloatArray, right: FloatArray, x_left: FloatArray, x_right: FloatArray
+) -> float:
+    """Length [m] of the route the simulator lays between two held points of one cable.
+
+    From the left tool centre point along +-``x_left`` (the sense towards
+    the right gripper) for ``PAD_EXIT``, straight to the point ``PAD_EXIT``
+    from the right tool centre point along +-``x_right`` (the sense towards
+    the left exit), and along it to the right tool centre point
+    (``tautwire.sim.route``).
+
+    Args:
+        left: Left tool centre point [m].  # (3,)
+        right: Right tool centre point [m].  # (3,)
+        x_left: The left tool's x-axis (unit).  # (3,)
+        x_right: The right tool's x-axis (unit).  # (3,)
+    """
+    exit_left = left + (1.0 if float(x_left @ (right - left)) >= 0.0 else -1.0) * PAD_EXIT * x_left
+    towards = 1.0 if float(x_right @ (exit_left - right)) > 0.0 else -1.0
+    entry_right = right + towards * PAD_EXIT * x_right
+    return 2.0 * PAD_EXIT + float(np.linalg.norm(entry_right - exit_left))
+
+
+def _hold_distance(
+    route: float, anchor: FloatArray, u: FloatArray, dz: float, tool_yaw: float
+) -> float:
+    """Horizontal distance [m] along ``u`` from ``anchor`` at which the laid route is ``route``.
+
+    The gripper sits at anchor + r u + dz z with its x-axis at ``tool_yaw``;
+    the route (:func:`anchor_route_length`) grows with r.
+    """
+    rise = np.array([0.0, 0.0, dz])
+
+    def length(r: float) -> float:
+        return anchor_route_length(anchor, anchor + r * u + rise, tool_yaw)
+
+    return _bisect(length, route, 0.0, 2.0 * route)
+
+
+def _pair_distance(
+    route: float, middle: FloatArray, u: FloatArray, yaw_left: float, yaw_right: float
+) -> float:
+    """Distance [m] of two grippers about ``middle`` along ``u`` whose laid route is ``route``."""
+    x_left, x_right = _horizontal(yaw_left), _horizontal(yaw_right)
+
+    def length(d: float) -> float:
+        return pair_route_length(middle - 0.5 * d * u, middle + 0.5 * d * u, x_left, x_right)
+
+    return _bisect(length, route, 2.0 * PAD_EXIT, 2.0 * route)
 
 
 def _cable(draw: _Draw, **fields: Any) -> dict[str, Any]:
@@ -187,15 +289,23 @@ def _parked(away_from: np.ndarray) -> dict[str, Any]:
 
 
 def _anchor_and_hold(
-    draw: _Draw, max_hold: float, min_hold: float = 0.25
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+    draw: _Draw, max_hold: float, min_hold: float = 0.25, tool_yaw: float | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, dict[str, Any]]:
     """An anchor, a hold on a cable from it and a slack start pose of the gripper.
 
-    Returns the anchor, the gripper's start position, the unit direction
-    anchor -> gripper and the cable's fields (the left gripper holds it).
+    The gripper's distance from the anchor is the one at which the route the
+    simulator lays (through the fingers along the tool x-axis at
+    ``tool_yaw``) is ``slack`` times the held length. ``tool_yaw`` [rad]:
+    the gripper's start yaw; None draws it uniformly over the full circle
+    (``tool_yaw`` in the inputs).
+
+    Returns the anchor, the gripper's start position, the unit horizontal
+    direction anchor -> gripper, the start yaw and the cable's fields (the
+    left gripper holds it).
     """
     cable = _cable(draw)
     length = float(cable["length"])
+    yaw = draw.uniform("tool_yaw", -math.pi, math.pi) if tool_yaw is None else tool_yaw
     for _ in range(1000):
         anchor = np.array(
             [float(draw.rng.uniform(0.0, 0.35)), float(draw.rng.uniform(-0.3, 0.3)), 0.0]
@@ -203,16 +313,20 @@ def _anchor_and_hold(
         anchor[2] = float(draw.rng.uniform(0.06, 0.14))
         at = float(draw.rng.uniform(min_hold, min(max_hold, length)))
         slack = float(draw.rng.uniform(0.85, 0.97))
-        yaw = float(draw.rng.uniform(-math.pi, math.pi))
-        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
-        gripper = anchor + slack * at * u + np.array([0.0, 0.0, draw.rng.uniform(-0.02, 0.04)])
+        u = _horizontal(float(draw.rng.uniform(-math.pi, math.pi)))
+        dz = float(draw.rng.uniform(-0.02, 0.04))
+        r = _hold_distance(slack * at, anchor, u, dz, yaw)
+        gripper = anchor + r * u + np.array([0.0, 0.0, dz])
         if _inside(gripper) and gripper[2] > 0.05:
             draw.point("anchor", anchor)
             draw.point("gripper", gripper)
             draw.inputs["hold_at"] = round(at, 6)
             draw.inputs["slack"] = round(slack, 6)
+            draw.inputs["dz"] = round(dz, 6)
+            # 0: tool x along the cable, away from the anchor; +-pi: pointing at it
+            draw.inputs["tool_yaw_to_cable"] = round(_yaw_to(yaw, u), 6)
             cable.update(start="A1", held_by={"arm": "left", "at": at})
-            return anchor, gripper, u, cable
+            return anchor, gripper, u, yaw, cable
     raise InvalidArgumentError("could not place an anchor and a hold inside the workspace")
 
 
@@ -221,13 +335,17 @@ def _two_holds(
     span_range: tuple[float, float],
     tail_max: float = 0.25,
     long_tail: float = 0.0,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, Any]]:
+) -> tuple[np.ndarray, np.ndarray, dict[str, Any], dict[str, Any]]:
     """A cable with free ends held by both grippers, slack between them.
 
     The left gripper (with the sensor) holds at s1, the right at s2 > s1;
-    one of the two free ends is at least ``long_tail`` [m] long.
-    Returns the left and right start positions, the unit direction left ->
-    right and the cable's fields.
+    one of the two free ends is at least ``long_tail`` [m] long. Each
+    gripper's start yaw is uniform over the full circle (``yaw_left``,
+    ``yaw_right``); their distance is the one at which the route the
+    simulator lays between them (:func:`pair_route_length`) is ``slack``
+    times the span.
+    Returns the left and right start positions, both grippers' fields and
+    the cable's fields.
     """
     cable = _cable(draw)
     length = float(cable["length"])
@@ -242,8 +360,7 @@ def _two_holds(
         if max(s1, tails - s1) < long_tail:
             continue
         slack = float(draw.rng.uniform(0.85, 0.97))
-        yaw = float(draw.rng.uniform(-math.pi, math.pi))
-        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+        u = _horizontal(float(draw.rng.uniform(-math.pi, math.pi)))
         middle = np.array(
             [
                 float(draw.rng.uniform(0.15, 0.55)),
@@ -251,23 +368,29 @@ def _two_holds(
                 float(draw.rng.uniform(0.22, 0.35)),
             ]
         )
-        left = middle - 0.5 * slack * span * u
-        right = middle + 0.5 * slack * span * u
+        yaws = (
+            float(draw.rng.uniform(-math.pi, math.pi)),
+            float(draw.rng.uniform(-math.pi, math.pi)),
+        )
+        d = _pair_distance(slack * span, middle, u, *yaws)
+        left = middle - 0.5 * d * u
+        right = middle + 0.5 * d * u
         if _inside(left) and _inside(right):
             draw.point("left", left)
             draw.point("right", right)
             draw.inputs["hold_left"] = round(s1, 6)
             draw.inputs["hold_right"] = round(s1 + span, 6)
             draw.inputs["slack"] = round(slack, 6)
+            grippers = _pair_grippers(draw, left, right, u, yaws)
             cable.update(held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}])
-            return left, right, u, cable
+            return left, right, grippers, cable
     raise InvalidArgumentError("could not place two holds inside the workspace")
 
 
-def _one_arm(gripper: np.ndarray, u: np.ndarray) -> dict[str, Any]:
-    """The left gripper at ``gripper`` with its x-axis along ``u``; the right one parked."""
+def _one_arm(gripper: np.ndarray, yaw: float) -> dict[str, Any]:
+    """The left gripper at ``gripper`` with its x-axis at ``yaw`` [rad]; the right one parked."""
     return {
-        "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
+        "left": {"position": list(gripper), "orientation": _yaw_quaternion(yaw)},
         "right": _parked(gripper),
     }
 
@@ -277,23 +400,33 @@ def _anchor(position: np.ndarray) -> dict[str, Any]:
     return {"name": "A1", "type": "anchor", "position": list(position)}
 
 
-def _pair_grippers(left: np.ndarray, right: np.ndarray, u: np.ndarray) -> dict[str, Any]:
-    q = _yaw_quaternion(u)
+def _pair_grippers(
+    draw: _Draw, left: np.ndarray, right: np.ndarray, u: np.ndarray, yaws: tuple[float, float]
+) -> dict[str, Any]:
+    """Both grippers holding the cable, with their start yaws [rad] (noted in the inputs).
+
+    ``u`` is the direction left -> right; ``yaw_left_to_cable`` is the left
+    tool's x-axis against -u (the cable leaves the left gripper away from
+    the right one), ``yaw_right_to_cable`` the right one's against u.
+    """
+    for name, yaw, away in (("yaw_left", yaws[0], -u), ("yaw_right", yaws[1], u)):
+        draw.inputs[name] = round(yaw, 6)
+        draw.inputs[f"{name}_to_cable"] = round(_yaw_to(yaw, away), 6)
     return {
-        "left": {"position": list(left), "orientation": q},
-        "right": {"position": list(right), "orientation": q},
+        "left": {"position": list(left), "orientation": _yaw_quaternion(yaws[0])},
+        "right": {"position": list(right), "orientation": _yaw_quaternion(yaws[1])},
     }
 
 
 def scene_a(seed: int) -> TrialScene:
     """A: a cable held by both grippers, slack between them: tension it."""
     draw = _Draw(seed)
-    left, right, u, cable = _two_holds(draw, (0.15, 0.5))
+    _, _, grippers, cable = _two_holds(draw, (0.15, 0.5))
     force = draw.uniform("force", 1.5, 4.0)
     scenario = _scenario(
         "A",
         seed,
-        _pair_grippers(left, right, u),
+        grippers,
         [],
         cable,
         [{"primitive": "A", "force": force}],
@@ -304,7 +437,7 @@ def scene_a(seed: int) -> TrialScene:
 def scene_b(seed: int) -> TrialScene:
     """B: tension (A), then part the grippers letting the cable slide through one."""
     draw = _Draw(seed)
-    left, right, u, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3, long_tail=0.1)
+    _, _, grippers, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3, long_tail=0.1)
     force = draw.uniform("force", 1.5, 3.0)
     holds = cable["held_by"]
     tails = {"left": holds[0]["at"], "right": cable["length"] - holds[1]["at"]}
@@ -318,7 +451,7 @@ def scene_b(seed: int) -> TrialScene:
     scenario = _scenario(
         "B",
         seed,
-        _pair_grippers(left, right, u),
+        grippers,
         [],
         cable,
         [
@@ -337,12 +470,12 @@ def scene_b(seed: int) -> TrialScene:
 def scene_d(seed: int) -> TrialScene:
     """D: a cable from an anchor, slack, held by the left gripper: tension it."""
     draw = _Draw(seed)
-    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.8)
+    anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.8)
     force = draw.uniform("force", 1.5, 4.0)
     scenario = _scenario(
         "D",
         seed,
-        _one_arm(gripper, u),
+        _one_arm(gripper, yaw),
         [_anchor(anchor)],
         cable,
         [{"primitive": "D", "arm": "left", "force": force}],
@@ -353,7 +486,7 @@ def scene_d(seed: int) -> TrialScene:
 def scene_i(seed: int) -> TrialScene:
     """I: tension (D), then rotate around the anchor by a random angle."""
     draw = _Draw(seed)
-    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.5)
+    anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.5)
     force = draw.uniform("force", 1.5, 4.0)
     angle = draw.uniform("angle", 0.5 * math.pi, math.pi) * (
         1.0 if draw.choice("sense", ("positive", "negative")) == "positive" else -1.0
@@ -361,7 +494,7 @@ def scene_i(seed: int) -> TrialScene:
     scenario = _scenario(
         "I",
         seed,
-        _one_arm(gripper, u),
+        _one_arm(gripper, yaw),
         [_anchor(anchor)],
         cable,
         [
@@ -375,13 +508,15 @@ def scene_i(seed: int) -> TrialScene:
 def scene_e(seed: int) -> TrialScene:
     """E: tension (D), then move away from the anchor letting the cable slide."""
     draw = _Draw(seed)
-    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6)
+    anchor, gripper, u, yaw, cable = _anchor_and_hold(draw, 0.6)
     tail = float(cable["length"]) - float(cable["held_by"]["at"])
     if tail < 0.1:  # room to slide: hold the cable further from its end
-        cable["held_by"]["at"] = float(cable["length"]) - 0.1
-        draw.inputs["hold_at"] = round(float(cable["held_by"]["at"]), 6)
-        gripper = anchor + float(draw.inputs["slack"]) * float(cable["held_by"]["at"]) * u
-        gripper[2] = float(draw.inputs["gripper_z"])
+        at = float(cable["length"]) - 0.1
+        cable["held_by"]["at"] = at
+        draw.inputs["hold_at"] = round(at, 6)
+        dz = float(draw.inputs["dz"])
+        r = _hold_distance(float(draw.inputs["slack"]) * at, anchor, u, dz, yaw)
+        gripper = anchor + r * u + np.array([0.0, 0.0, dz])
         draw.point("gripper", gripper)
         tail = 0.1
     force = draw.uniform("force", 1.5, 3.0)
@@ -390,7 +525,7 @@ def scene_e(seed: int) -> TrialScene:
     scenario = _scenario(
         "E",
         seed,
-        _one_arm(gripper, u),
+        _one_arm(gripper, yaw),
         [_anchor(anchor)],
         cable,
         [
@@ -402,14 +537,15 @@ def scene_e(seed: int) -> TrialScene:
 
 
 def scene_g(seed: int) -> TrialScene:
-    """G: a gripper turned 20-50 deg off the cable: tension (D), then align (G)."""
+    """G: a gripper at any start yaw, pitched up to 20 deg: tension (D), then align (G).
+
+    The pitch tilts the fingers' exit by at most ``PAD_EXIT`` sin(20 deg)
+    (4 mm) out of the yawed route that the slack is measured along.
+    """
     draw = _Draw(seed)
-    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6)
+    anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.6)
     force = draw.uniform("force", 1.5, 3.0)
-    yaw_off = draw.uniform("yaw_offset", math.radians(20.0), math.radians(50.0))
-    yaw_off *= 1.0 if draw.choice("yaw_sense", ("positive", "negative")) == "positive" else -1.0
     pitch = draw.uniform("pitch_offset", -math.radians(20.0), math.radians(20.0))
-    yaw = math.atan2(float(u[1]), float(u[0])) + yaw_off
     qz = np.array([math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)])
     qy = np.array([math.cos(0.5 * pitch), 0.0, math.sin(0.5 * pitch), 0.0])
     q = multiply(qz, qy)
@@ -433,7 +569,7 @@ def scene_g(seed: int) -> TrialScene:
 def scene_h(seed: int) -> TrialScene:
     """H: tension (D), then the right gripper grasps the taut cable between anchor and gripper."""
     draw = _Draw(seed)
-    anchor, gripper, u, cable = _anchor_and_hold(draw, 0.6, min_hold=0.3)
+    anchor, gripper, u, left_yaw, cable = _anchor_and_hold(draw, 0.6, min_hold=0.3)
     force = draw.uniform("force", 1.5, 3.0)
     hold = float(cable["held_by"]["at"])
     at = draw.uniform("grasp_at", 0.35 * hold, 0.65 * hold)
@@ -448,16 +584,14 @@ def scene_h(seed: int) -> TrialScene:
     else:
         raise InvalidArgumentError("could not place the grasping gripper inside the workspace")
     draw.point("right", start)
-    yaw = math.atan2(float(u[1]), float(u[0])) + draw.uniform("right_yaw", -0.5, 0.5)
+    yaw = _azimuth(u) + draw.uniform("right_yaw", -0.5, 0.5)
     scenario = _scenario(
         "H",
         seed,
         {
-            "left": {"position": list(gripper), "orientation": _yaw_quaternion(u)},
-            "right": {
-                "position": list(start),
-                "orientation": [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)],
-            },
+            "left": {"position": list(gripper), "orientation": _yaw_quaternion(left_yaw)},
+            # the grasping gripper holds nothing at the start: x about along the cable
+            "right": {"position": list(start), "orientation": _yaw_quaternion(yaw)},
         },
         [_anchor(anchor)],
         cable,
@@ -501,6 +635,7 @@ def scene_f(seed: int) -> TrialScene:
     cable = _cable(draw)
     length = float(cable["length"])
     share = float(draw.rng.uniform(0.0, 1.0))  # where the clip's push force lies in its range
+    tool_yaw = draw.uniform("tool_yaw", -math.pi, math.pi)
     for _ in range(1000):
         anchor = np.array(
             [
@@ -513,8 +648,9 @@ def scene_f(seed: int) -> TrialScene:
         to_clip = float(draw.rng.uniform(0.15, 0.35))
         at = min(to_clip + beyond, length)
         yaw = float(draw.rng.uniform(-math.pi, math.pi))
-        u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
-        gripper = anchor + float(draw.rng.uniform(0.95, 0.98)) * at * u
+        u = _horizontal(yaw)
+        slack = float(draw.rng.uniform(0.95, 0.98))  # along the route the simulator lays
+        gripper = anchor + _hold_distance(slack * at, anchor, u, 0.0, tool_yaw) * u
         # below the slack cable's sag, so that it does not start on the clip
         seat = anchor + to_clip * u - np.array([0.0, 0.0, 0.05])
         if not (_inside(gripper) and _inside(seat, 0.02) and at > to_clip + 0.05):
@@ -532,6 +668,8 @@ def scene_f(seed: int) -> TrialScene:
     draw.point("gripper", gripper)
     draw.point("clip", seat)
     draw.inputs["hold_at"] = round(at, 6)
+    draw.inputs["slack"] = round(slack, 6)
+    draw.inputs["tool_yaw_to_cable"] = round(_yaw_to(tool_yaw, u), 6)
     push = 1.0 + share * (top - 1.0)
     draw.inputs["push_force"] = round(push, 6)
     slot = yaw + draw.uniform("slot_offset", -math.radians(10.0), math.radians(10.0))
@@ -540,7 +678,7 @@ def scene_f(seed: int) -> TrialScene:
     scenario = _scenario(
         "F",
         seed,
-        _one_arm(gripper, u),
+        _one_arm(gripper, tool_yaw),
         [
             _anchor(anchor),
             {"name": "C1", "type": "clip", "position": list(seat), "yaw": slot, "push_force": push},
@@ -571,14 +709,18 @@ def scene_c(seed: int) -> TrialScene:
     span = draw.uniform("span", 0.12, 0.3)
     s1 = draw.uniform("hold_left", 0.05, length - span - 0.05)
     slack = draw.uniform("slack", 0.9, 0.97)
-    yaw = slot + draw.uniform("yaw_offset", -0.5, 0.5)
-    u = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    u = _horizontal(slot + draw.uniform("yaw_offset", -0.5, 0.5))
     middle = seat + np.array(
         [draw.uniform("dx", -0.05, 0.05), draw.uniform("dy", -0.05, 0.05), 0.0]
     )
     middle[2] = seat[2] + draw.uniform("height", 0.05, 0.1)
-    left = middle - 0.5 * slack * span * u
-    right = middle + 0.5 * slack * span * u
+    yaws = (
+        draw.uniform("yaw_left", -math.pi, math.pi),
+        draw.uniform("yaw_right", -math.pi, math.pi),
+    )
+    d = _pair_distance(slack * span, middle, u, *yaws)  # along the route the simulator lays
+    left = middle - 0.5 * d * u
+    right = middle + 0.5 * d * u
     draw.point("left", left)
     draw.point("right", right)
     cable.update(held_by=[{"arm": "left", "at": s1}, {"arm": "right", "at": s1 + span}])
@@ -586,7 +728,7 @@ def scene_c(seed: int) -> TrialScene:
     scenario = _scenario(
         "C",
         seed,
-        _pair_grippers(left, right, u),
+        _pair_grippers(draw, left, right, u, yaws),
         [{"name": "C1", "type": "clip", "position": list(seat), "yaw": slot, "push_force": push}],
         cable,
         [{"primitive": "A", "force": force}, {"primitive": "C", "clip": "C1"}],
