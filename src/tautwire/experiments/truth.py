@@ -48,12 +48,17 @@ simulator showed). Only successes can disagree: those are the run's
 ``false_successes``.
 
 Contact consistency (NEES coverage): :class:`FilterWatch` records, at every
-contact filter iteration, the filter's estimate and covariance against the
-true contact of the span the filter observes. A sample counts once the
-filter is converged in the robot's own sense (its largest std at most
-``trusted_std``, when the robot starts to act on it); it is consistent when
-the error is within 3 reported std on every axis (per axis, not the 3-D
-NEES).
+contact filter iteration, the contact estimate as the model reports it
+(:meth:`ModelEstimator.contact_estimate`: the accepted estimate, a change
+under test not counted until accepted, with its reported covariance, the
+filter's P plus the line model's systematic error) against the true contact
+of the span the filter observes: an anchor, a clip's exit, a peg's axis
+point at the cable's height for a round estimate, or where the cable leaves
+the peg for a point estimate. A sample counts once the model trusts the
+estimate (the robot acts on it: std within ``trusted_std`` on the axes that
+matter, near its design); it is consistent when the error is within 3
+reported std on every axis (per axis; :attr:`FilterSample.nees` gives the
+3-D NEES).
 """
 
 from __future__ import annotations
