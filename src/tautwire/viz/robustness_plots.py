@@ -18,6 +18,8 @@ from matplotlib.figure import Figure
 #: Marker per fixture type, colour per run kind.
 MARKERS = {"anchor": "o", "peg": "s"}
 COLOURS = {"clean": "tab:blue", "fault": "tab:orange"}
+#: How the legends name the two runs of a trial.
+HALVES = {"clean": "no fault", "fault": "one fault"}
 #: Where runs without an estimate are drawn on the error plot (error / tolerance).
 NO_ESTIMATE = 300.0
 
@@ -62,7 +64,7 @@ def plot_error_vs_yaw(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
                 ]
                 if not xs:
                     continue
-                label = f"{half}, {fixture}, {'success' if success else 'failure'}"
+                label = f"{HALVES[half]}, {fixture}, {'success' if success else 'failure'}"
                 ax.scatter(
                     xs,
                     np.clip(ys, 1e-3, NO_ESTIMATE),
@@ -92,7 +94,9 @@ def plot_stiffness(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
     """k_hat / k at the end of D against the true k (log x), with the +-10 % band.
 
     k is the spring constant the gripper truly pulls against, measured in the
-    simulator at the end of D; filled markers are successes, open ones failures.
+    simulator at the end of D; only runs whose D succeeded (the figures' k_hat
+    error counts those); filled markers are runs that succeeded, open ones
+    runs that failed later.
     """
     fig = Figure(figsize=(8, 5), constrained_layout=True)
     ax = fig.add_subplot()
@@ -106,6 +110,7 @@ def plot_stiffness(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
                     and r["fixture_type"] == fixture
                     and bool(r["success"]) is success
                     and r["k_ratio"] is not None
+                    and r["tension_success"]
                 ]
                 if not pts:
                     continue
@@ -114,14 +119,16 @@ def plot_stiffness(runs: Sequence[dict[str, Any]], path: str | Path) -> Path:
                     [float(r["k_ratio"]) for r in pts],
                     marker=marker,
                     s=28,
-                    label=f"{half}, {fixture}, {'success' if success else 'failure'}",
+                    label=f"{HALVES[half]}, {fixture}, {'success' if success else 'failure'}",
                     facecolors=colour if success else "none",
                     edgecolors=colour,
                     linewidths=1.0,
                 )
     ax.axhspan(0.9, 1.1, color="tab:green", alpha=0.15, label="within 10 %")
     ax.axhline(1.0, color="k", lw=0.8)
-    ratios = [float(r["k_ratio"]) for r in runs if r["k_ratio"] is not None]
+    ratios = [
+        float(r["k_ratio"]) for r in runs if r["k_ratio"] is not None and r["tension_success"]
+    ]
     ax.set_yscale("log")
     ticks = [0.1, 0.2, 0.5, 0.7, 0.9, 1.0, 1.1, 1.4, 2.0, 5.0, 10.0]
     low = min([0.8, *ratios]) / 1.1
