@@ -71,8 +71,11 @@ FloatArray = NDArray[np.float64]
 #: Default process noise q [m^2 per step, per axis] (see the module docstring).
 DEFAULT_PROCESS_NOISE = 1e-9
 #: Process noise [m^2 per step] of a round contact's radius (see
-#: :meth:`ContactPointFilter.make_round`): 0.2 mm a step.
-RADIUS_PROCESS_NOISE = 4e-8
+#: :meth:`ContactPointFilter.make_round`): 0.01 mm a step. On a partial wrap
+#: the radius and the axis's position along the wrap's bisector are nearly
+#: interchangeable, and 0.2 mm a step let the radius run to 35 mm where the
+#: cable kept 12-16 mm (robustness trial 38: 19.6 mm off the axis; 16.5 mm now).
+RADIUS_PROCESS_NOISE = 1e-10
 #: Default angular spread [rad] of the first samples before the first estimate.
 DEFAULT_INIT_SPREAD = math.radians(10.0)
 
