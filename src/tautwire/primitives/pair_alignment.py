@@ -31,6 +31,7 @@ from numpy.typing import NDArray
 
 from tautwire.control import CoordinatedPose, DualPose, Pose, coordinated_pose
 from tautwire.model.quaternion import multiply, rotate, turn_x_onto
+from tautwire.primitives.tool_axis import EXIT_SCALE
 from tautwire.robot import Observation
 
 FloatArray = NDArray[np.float64]
@@ -53,9 +54,12 @@ class PairAlignment:
     Decided once, from the observation at the start of a primitive: the
     line l from the left to the right tool centre point, and for each
     gripper whether its frame is turned half about z (its x-axis points
-    against l). The set point (:attr:`desired`) holds the start's absolute
-    position and the direction of p_rel; each controlled frame is turned by
-    the shortest arc that takes its x-axis onto l.
+    against l: for the left gripper, against l itself; for the right one,
+    towards the point ``EXIT_SCALE`` from the left tool centre point where
+    the cable leaves the left fingers, which decides a grasp across l). The
+    set point (:attr:`desired`) holds the start's absolute position and the
+    direction of p_rel; each controlled frame is turned by the shortest arc
+    that takes its x-axis onto l.
 
     Args:
         obs: The observation at the start.
@@ -71,9 +75,15 @@ class PairAlignment:
     def __init__(self, obs: Observation) -> None:
         line = obs.right.position - obs.left.position
         self.line: FloatArray = line / max(float(np.linalg.norm(line)), 1e-12)
+        # the cable leaves the left fingers through the fingertip towards the
+        # right gripper, and runs straight from there into the right fingers
+        # through the fingertip that faces it (decides a grasp across the line)
+        x_left, x_right = _x_axis(obs.left.orientation), _x_axis(obs.right.orientation)
+        flip_left = float(x_left @ self.line) < 0.0
+        exit_left = obs.left.position + (-EXIT_SCALE if flip_left else EXIT_SCALE) * x_left
         self.flip: tuple[bool, bool] = (
-            float(_x_axis(obs.left.orientation) @ self.line) < 0.0,
-            float(_x_axis(obs.right.orientation) @ self.line) < 0.0,
+            flip_left,
+            float(x_right @ (exit_left - obs.right.position)) > 0.0,
         )
         frames = self.tool_frames(obs)
         target = DualPose(

@@ -25,8 +25,8 @@ class SingleArmSliding(SlidingPrimitive):
 
     A gripper may start at any yaw. While the cable is tensioned for
     sliding (D's hybrid control with f_d = f_slid), the tool axis the cable
-    leaves along, +x or -x
-    (:class:`~tautwire.primitives.tool_axis.ToolAxis`), turns onto the
+    leaves along, +x or -x, decided from the whole wrench
+    (:meth:`~tautwire.primitives.tool_axis.ToolAxis.observe`), turns onto the
     low-passed cable direction by the shortest arc, as in D; the slide
     starts only once it has stayed within ``ALIGNED`` of the cable (for
     ``ALIGNED_TIME`` if it had to turn), and the gripper then keeps that
@@ -67,6 +67,8 @@ class SingleArmSliding(SlidingPrimitive):
             self._taut_since = obs.time
         me = obs.gripper(self.arm)
         cable = self._cable.update(obs.time, state.direction)
+        wrench = obs.wrench(self.arm)  # which fingertip: decided from the whole wrench
+        self._axis.observe(obs.time, me.orientation, wrench.force, wrench.torque)
         target = Pose(self._held_position(), self._axis.target(me.orientation, cable))
         self._hold = with_pose(self._hold, self.arm, target)
         if self._axis.angle(me.orientation, cable) > ALIGNED:

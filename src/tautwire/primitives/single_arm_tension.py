@@ -230,6 +230,8 @@ class SingleArmTension(Primitive):
             # on the low-passed direction: a cable bent round a fingertip
             # pulls off the line, rubs the pad and makes the force jump
             cable = self._cable.update(obs.time, state.direction)
+            wrench = obs.wrench(self.arm)  # which fingertip: decided from the whole wrench
+            self._axis.observe(obs.time, me.orientation, wrench.force, wrench.torque)
             q = self._axis.target(me.orientation, cable)
             self._desired = with_pose(self._desired, self.arm, Pose(self._held_position(), q))
             aligned = self._axis.angle(me.orientation, cable) <= ALIGNED
