@@ -568,7 +568,7 @@ def _tension_truth(force: float, watch: StepWatch) -> tuple[bool, str]:
     taut = bool(watch.taut[-1]) if watch.taut else False
     error = abs(mean - force) / force
     ok = taut and error <= TENSION_TOLERANCE
-    against = watch.span.fixture or "nothing"
+    against = watch.span.fixture or "no fixture (the other gripper or a free end)"
     return ok, (
         f"true tension {mean:.2f} N against {against} (set point {force:.2f} N, "
         f"{100 * error:.0f} % off, tolerance {100 * TENSION_TOLERANCE:.0f} %), "

@@ -272,9 +272,12 @@ class GroundTruth:
         (MuJoCo contacts): a peg (the segment passes within the peg's radius
         plus the cable's radius plus :data:`NEAR` of its axis, below its top)
         or a clip (the segment passes its seat within the slot); else the
-        anchored start. A stretched soft cable's vertices may lie centimetres
-        apart, so segments, not vertices, are tested. None when ``arm`` does
-        not hold ``cable``.
+        anchored start. When the other gripper holds the same cable the span
+        runs towards it instead (parallel primitives), and ends there if no
+        fixture comes first (``fixture`` None, the segments inside either
+        gripper's fingers left out). A stretched soft cable's vertices may
+        lie centimetres apart, so segments, not vertices, are tested. None
+        when ``arm`` does not hold ``cable``.
         """
         held = self._world.held(arm)
         if held is None or held[0] != cable:
@@ -284,12 +287,18 @@ class GroundTruth:
         arc = self._world.scene.discretizations[cable].arc
         h = held[1]
         step = -1 if h > 0 else 1
+        other = self._world.held("right" if arm == "left" else "left")
+        partner = other[1] if other is not None and other[0] == cable else None
+        if partner is not None and partner != h:
+            step = 1 if partner > h else -1
         touched = [
             self._world.spec.fixture(name) for name, c in self._contact_pairs() if c == cable
         ]
         fixture: str | None = None
         leave, leave_arc, i = pts[0], 0.0, 0
         hit = self._first_touching(pts, h, step, idx.spec.radius, touched)
+        if hit is not None and partner is not None and (hit[1] - partner) * step >= 0:
+            hit = None  # beyond the other gripper
         if hit is not None:  # segment (near, far = near + step) touches ``fixture`` at t
             fixture, near, t = hit
             far = near + step
@@ -298,10 +307,19 @@ class GroundTruth:
             i = far
         if fixture is None:
             i = 0 if step < 0 else len(pts) - 1
+            if partner is not None and partner != h:
+                i = partner
             leave, leave_arc = pts[i], float(arc[i])
-            if step < 0 and idx.spec.start is not None:
+            if step < 0 and idx.spec.start is not None and partner is None:
                 fixture = idx.spec.start
         segments = _free_segments(arc, i, h)
+        if partner is not None and i == partner:
+            segments = _free_segments(arc, h, partner)  # out of the partner's fingers too
+            lo, hi = segments
+            both = _free_segments(arc, i, h)
+            segments = (max(lo, both[0]), min(hi, both[1]))
+            if segments[1] <= segments[0]:
+                segments = both
         if i != h and fixture is not None and i != (0 if step < 0 else len(pts) - 1):
             # the segment at the fixture may be partly wrapped: not in the free span
             lo, hi = segments
