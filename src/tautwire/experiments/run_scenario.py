@@ -23,7 +23,7 @@ from tautwire.model import PathGraph
 from tautwire.primitives import PrimitiveContext, make_primitive
 from tautwire.scenario import Scenario
 from tautwire.sim.build import build_world, robot_of, truth_of
-from tautwire.sim.ground_truth import GroundTruth
+from tautwire.sim.ground_truth import GroundTruth, closest_on_polyline
 from tautwire.sim.world import SimWorld
 from tautwire.tasks import StepReport, TickRecord, run_step
 from tautwire.tasks.initial_model import initial_context
@@ -102,24 +102,13 @@ def score_contacts(ctx: PrimitiveContext, truth: GroundTruth) -> list[ContactSco
     return scores
 
 
-def _closest_on_polyline(polyline: FloatArray, p: FloatArray) -> FloatArray:
-    a, b = polyline[:-1], polyline[1:]
-    ab = b - a
-    t = np.clip(
-        np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-18), 0, 1
-    )
-    q = a + t[:, None] * ab
-    out: FloatArray = q[int(np.argmin(np.linalg.norm(q - p, axis=1)))]
-    return out
-
-
 def model_error(graph: PathGraph, polyline: FloatArray) -> dict[str, float] | None:
     """Horizontal and vertical deviation [m] of the model's constrained points from the cable."""
     horizontal, vertical = [], []
     for pt in graph.points:
         if not pt.is_constrained:
             continue
-        d = pt.position - _closest_on_polyline(polyline, pt.position)
+        d = pt.position - closest_on_polyline(polyline, pt.position)
         horizontal.append(float(np.hypot(d[0], d[1])))
         vertical.append(abs(float(d[2])))
     if not horizontal:

@@ -255,7 +255,7 @@ class GroundTruth:
             raise InvalidArgumentError(f"fixture {clip!r} is not a clip")
         design = self._world.scene.clips[clip]
         pts = self.polyline(cable)
-        q = _closest_on_polyline(pts, spec.position) - spec.position
+        q = closest_on_polyline(pts, spec.position) - spec.position
         along = float(q @ spec.direction)
         across = float(np.hypot(q[0], q[1]) ** 2 - along**2)
         return (
@@ -487,7 +487,7 @@ class GroundTruth:
         return exit_point
 
 
-def _closest_on_polyline(polyline: FloatArray, p: FloatArray) -> FloatArray:
+def closest_on_polyline(polyline: FloatArray, p: FloatArray) -> FloatArray:
     """The point of ``polyline`` (N, 3) nearest ``p`` [m]."""
     a, b = polyline[:-1], polyline[1:]
     ab = b - a
