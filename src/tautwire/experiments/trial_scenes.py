@@ -289,15 +289,14 @@ def _parked(away_from: np.ndarray) -> dict[str, Any]:
 
 
 def _anchor_and_hold(
-    draw: _Draw, max_hold: float, min_hold: float = 0.25, tool_yaw: float | None = None
+    draw: _Draw, max_hold: float, min_hold: float = 0.25
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, dict[str, Any]]:
     """An anchor, a hold on a cable from it and a slack start pose of the gripper.
 
-    The gripper's distance from the anchor is the one at which the route the
-    simulator lays (through the fingers along the tool x-axis at
-    ``tool_yaw``) is ``slack`` times the held length. ``tool_yaw`` [rad]:
-    the gripper's start yaw; None draws it uniformly over the full circle
-    (``tool_yaw`` in the inputs).
+    The gripper's start yaw (``tool_yaw``) is uniform over the full circle,
+    independent of the cable's direction; its distance from the anchor is
+    the one at which the route the simulator lays (through the fingers
+    along the tool x-axis) is ``slack`` times the held length.
 
     Returns the anchor, the gripper's start position, the unit horizontal
     direction anchor -> gripper, the start yaw and the cable's fields (the
@@ -305,7 +304,7 @@ def _anchor_and_hold(
     """
     cable = _cable(draw)
     length = float(cable["length"])
-    yaw = draw.uniform("tool_yaw", -math.pi, math.pi) if tool_yaw is None else tool_yaw
+    yaw = draw.uniform("tool_yaw", -math.pi, math.pi)
     for _ in range(1000):
         anchor = np.array(
             [float(draw.rng.uniform(0.0, 0.35)), float(draw.rng.uniform(-0.3, 0.3)), 0.0]
