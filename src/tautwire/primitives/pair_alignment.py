@@ -4,7 +4,7 @@ When both grippers hold the cable (A, B), the taut cable runs straight
 between their tool centre points. Each gripper holds it as well with +x
 as with -x along that line, and a gripper may start at any yaw: its cable
 then leaves the fingers bent round a fingertip, which rubs the pad (the
-sensed tension reads low: 2.9 N for a true 3.5 N) and makes the force's
+sensed tension reads low: D read 2.9 N for a true 3.5 N) and makes the force's
 direction jump; a cable sliding through bent fingers does not see the
 fingers' 2 mu F_grip. So before the force is relied on, each gripper turns
 the tool axis, +x or -x, that is nearer the line onto it, by the shortest
