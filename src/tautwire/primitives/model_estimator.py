@@ -176,7 +176,8 @@ class TensionState:
             against: the compensated force's direction when the cable is
             taut, else the model's direction.  # (3,)
         force: Weight-compensated force vector [N].  # (3,)
-        raw_force: The measured force [N].  # (3,)
+        raw_force: The measured force [N] with the hanging free tail's weight
+            taken off (what the taut edge and the gripper's contacts pull).  # (3,)
         contact: Current contact estimate (or the model's prior) [m].  # (3,)
         span: Distance [m] from the gripper to ``contact``.
         taut: Whether the tension exceeds the taut threshold.
@@ -405,10 +406,13 @@ class ModelEstimator:
         """Process one observation; return the tension state of the gripper's edge."""
         p_g = obs.gripper(self.arm).position
         wrench = obs.wrench(self.arm)
-        f_raw = wrench.force
         self._gripper_positions = {"left": obs.left.position, "right": obs.right.position}
         g = self.gripper_index
         c = self._contact_index(g)
+        # the free tail beyond the gripper hangs from it: its weight is part
+        # of the sensed force, not of the taut edge (equ:edge_tension with the
+        # other edge's tension the tail's weight, p_hat_{i-1} f_{i-1} = m g)
+        f_raw = wrench.force + np.array([0.0, 0.0, self._tail_weight(g, c, float(p_g[2]))])
         filtered = self._track(c)
         contact = self._contact_position(c)
         if contact is None:
@@ -443,6 +447,23 @@ class ModelEstimator:
         self.state = TensionState(tension, direction, f, f_raw, contact, span, taut)
         self._update_graph(obs, g, c)
         return self.state
+
+    def _tail_weight(self, g: int, c: int | None, height: float) -> float:
+        """Weight [N] of the free tail hanging from the sensing gripper (0: none).
+
+        The free end on the side of the gripper away from its contact; the
+        part that hangs is at most the gripper's height above the board
+        (z = 0), the rest lies on it.
+        """
+        points = self.graph.points
+        step = 1 if c is None or c < g else -1
+        j = g + step
+        if not 0 <= j < len(points) or points[j].kind != "free":
+            return 0.0
+        s = self.graph.arc_lengths()
+        tail = abs(float(s[j] - s[g]))
+        hanging = min(tail, max(height, 0.0))
+        return self.graph.mass_per_length * hanging * GRAVITY_ABS
 
     def _accumulate(self, time: float, p_g: FloatArray, f_raw: FloatArray, tau: FloatArray) -> bool:
         """Add a sample; every estimation period, run the filter. True if the graph changed.
