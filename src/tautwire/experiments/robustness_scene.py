@@ -134,29 +134,33 @@ def _yaw_quaternion(yaw: float) -> list[float]:
     return [math.cos(0.5 * yaw), 0.0, 0.0, math.sin(0.5 * yaw)]
 
 
-class _Draws:
-    """Random draws of one scene, remembered as its inputs."""
+class SceneDraws:
+    """Random draws of one scene (robustness scene, Table I trial), remembered as its inputs."""
 
     def __init__(self, seed: int) -> None:
         self.rng = np.random.default_rng(seed)
         self.inputs: dict[str, float | str] = {}
 
     def uniform(self, name: str, low: float, high: float) -> float:
+        """A uniform draw in [low, high), recorded as ``name``."""
         value = float(self.rng.uniform(low, high))
         self.inputs[name] = round(value, 6)
         return value
 
     def log_uniform(self, name: str, low: float, high: float) -> float:
+        """A log-uniform draw in [low, high), recorded as ``name``."""
         value = float(np.exp(self.rng.uniform(math.log(low), math.log(high))))
         self.inputs[name] = round(value, 6)
         return value
 
     def choice(self, name: str, options: tuple[str, ...]) -> str:
+        """One of ``options``, uniformly, recorded as ``name``."""
         value = options[int(self.rng.integers(len(options)))]
         self.inputs[name] = value
         return value
 
     def point(self, name: str, p: FloatArray) -> list[float]:
+        """Record a point [m] as ``name_x``, ``name_y``, ``name_z``; return it as a list."""
         for axis, v in zip("xyz", p, strict=True):
             self.inputs[f"{name}_{axis}"] = round(float(v), 6)
         return [float(v) for v in p]
@@ -267,7 +271,7 @@ def _peg_route(
 
 
 def _place_anchor(
-    d: _Draws, length: float, angle: float, stretch: float, tool_yaw: float
+    d: SceneDraws, length: float, angle: float, stretch: float, tool_yaw: float
 ) -> dict[str, Any] | None:
     """Anchor, gripper start, and the fixtures, or None if this draw does not fit.
 
@@ -311,7 +315,7 @@ def _place_anchor(
 
 
 def _place_peg(
-    d: _Draws, length: float, angle: float, stretch: float, tool_yaw: float
+    d: SceneDraws, length: float, angle: float, stretch: float, tool_yaw: float
 ) -> dict[str, Any] | None:
     """Peg, anchor behind it, gripper start, or None if this draw does not fit.
 
@@ -404,7 +408,7 @@ def draw_scene(seed: int, fixture_type: str | None = None) -> RobustnessScene:
         raise InvalidArgumentError(
             f"unknown fixture type {fixture_type!r} (expected one of {', '.join(FIXTURE_TYPES)})"
         )
-    d = _Draws(seed)
+    d = SceneDraws(seed)
     kind = d.choice("fixture", FIXTURE_TYPES) if fixture_type is None else fixture_type
     d.inputs["fixture"] = kind
     place: dict[str, Any] | None = None

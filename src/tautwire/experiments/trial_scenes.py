@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
-from tautwire.experiments.robustness_scene import PAD_EXIT, anchor_route_length
+from tautwire.experiments.robustness_scene import PAD_EXIT, SceneDraws, anchor_route_length
 from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
 from tautwire.model.quaternion import multiply
 from tautwire.primitives.clip_sensing import PivotPress
@@ -127,34 +127,6 @@ class TrialScene:
         )
 
 
-class _Draw:
-    """Random draws of one trial, remembered as its inputs."""
-
-    def __init__(self, seed: int) -> None:
-        self.rng = np.random.default_rng(seed)
-        self.inputs: dict[str, float | str] = {}
-
-    def uniform(self, name: str, low: float, high: float) -> float:
-        value = float(self.rng.uniform(low, high))
-        self.inputs[name] = round(value, 6)
-        return value
-
-    def log_uniform(self, name: str, low: float, high: float) -> float:
-        value = float(np.exp(self.rng.uniform(math.log(low), math.log(high))))
-        self.inputs[name] = round(value, 6)
-        return value
-
-    def choice(self, name: str, options: tuple[str, ...]) -> str:
-        value = options[int(self.rng.integers(len(options)))]
-        self.inputs[name] = value
-        return value
-
-    def point(self, name: str, p: np.ndarray) -> list[float]:
-        for axis, v in zip("xyz", p, strict=True):
-            self.inputs[f"{name}_{axis}"] = round(float(v), 6)
-        return [float(v) for v in p]
-
-
 def _inside(p: np.ndarray, margin: float = MARGIN) -> bool:
     lo = np.asarray(WORKSPACE.lower) + margin
     hi = np.asarray(WORKSPACE.upper) - margin
@@ -242,7 +214,7 @@ def _pair_distance(
     return _bisect(length, route, 2.0 * PAD_EXIT, 2.0 * route)
 
 
-def _cable(draw: _Draw, **fields: Any) -> dict[str, Any]:
+def _cable(draw: SceneDraws, **fields: Any) -> dict[str, Any]:
     stiffness = draw.log_uniform("stiffness", *STIFFNESS_RANGE)
     length = draw.uniform("length", *LENGTH_RANGE)
     return {
@@ -289,7 +261,7 @@ def _parked(away_from: np.ndarray) -> dict[str, Any]:
 
 
 def _anchor_and_hold(
-    draw: _Draw, max_hold: float, min_hold: float = 0.25
+    draw: SceneDraws, max_hold: float, min_hold: float = 0.25
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, dict[str, Any]]:
     """An anchor, a hold on a cable from it and a slack start pose of the gripper.
 
@@ -330,7 +302,7 @@ def _anchor_and_hold(
 
 
 def _two_holds(
-    draw: _Draw,
+    draw: SceneDraws,
     span_range: tuple[float, float],
     tail_max: float = 0.25,
     long_tail: float = 0.0,
@@ -400,7 +372,7 @@ def _anchor(position: np.ndarray) -> dict[str, Any]:
 
 
 def _pair_grippers(
-    draw: _Draw, left: np.ndarray, right: np.ndarray, u: np.ndarray, yaws: tuple[float, float]
+    draw: SceneDraws, left: np.ndarray, right: np.ndarray, u: np.ndarray, yaws: tuple[float, float]
 ) -> dict[str, Any]:
     """Both grippers holding the cable, with their start yaws [rad] (noted in the inputs).
 
@@ -419,7 +391,7 @@ def _pair_grippers(
 
 def scene_a(seed: int) -> TrialScene:
     """A: a cable held by both grippers, slack between them: tension it."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     _, _, grippers, cable = _two_holds(draw, (0.15, 0.5))
     force = draw.uniform("force", 1.5, 4.0)
     scenario = _scenario(
@@ -435,7 +407,7 @@ def scene_a(seed: int) -> TrialScene:
 
 def scene_b(seed: int) -> TrialScene:
     """B: tension (A), then part the grippers letting the cable slide through one."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     _, _, grippers, cable = _two_holds(draw, (0.15, 0.4), tail_max=0.3, long_tail=0.1)
     force = draw.uniform("force", 1.5, 3.0)
     holds = cable["held_by"]
@@ -468,7 +440,7 @@ def scene_b(seed: int) -> TrialScene:
 
 def scene_d(seed: int) -> TrialScene:
     """D: a cable from an anchor, slack, held by the left gripper: tension it."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.8)
     force = draw.uniform("force", 1.5, 4.0)
     scenario = _scenario(
@@ -484,7 +456,7 @@ def scene_d(seed: int) -> TrialScene:
 
 def scene_i(seed: int) -> TrialScene:
     """I: tension (D), then rotate around the anchor by a random angle."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.5)
     force = draw.uniform("force", 1.5, 4.0)
     angle = draw.uniform("angle", 0.5 * math.pi, math.pi) * (
@@ -506,7 +478,7 @@ def scene_i(seed: int) -> TrialScene:
 
 def scene_e(seed: int) -> TrialScene:
     """E: tension (D), then move away from the anchor letting the cable slide."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     anchor, gripper, u, yaw, cable = _anchor_and_hold(draw, 0.6)
     tail = float(cable["length"]) - float(cable["held_by"]["at"])
     if tail < 0.1:  # room to slide: hold the cable further from its end
@@ -541,7 +513,7 @@ def scene_g(seed: int) -> TrialScene:
     The pitch tilts the fingers' exit by at most ``PAD_EXIT`` sin(20 deg)
     (4 mm) out of the yawed route that the slack is measured along.
     """
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     anchor, gripper, _, yaw, cable = _anchor_and_hold(draw, 0.6)
     force = draw.uniform("force", 1.5, 3.0)
     pitch = draw.uniform("pitch_offset", -math.radians(20.0), math.radians(20.0))
@@ -567,7 +539,7 @@ def scene_g(seed: int) -> TrialScene:
 
 def scene_h(seed: int) -> TrialScene:
     """H: tension (D), then the right gripper grasps the taut cable between anchor and gripper."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     anchor, gripper, u, left_yaw, cable = _anchor_and_hold(draw, 0.6, min_hold=0.3)
     force = draw.uniform("force", 1.5, 3.0)
     hold = float(cable["held_by"]["at"])
@@ -630,7 +602,7 @@ def _pivot_press(
 
 def scene_f(seed: int) -> TrialScene:
     """F: tension (D), then press the cable into a clip between the anchor and the gripper."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     cable = _cable(draw)
     length = float(cable["length"])
     share = float(draw.rng.uniform(0.0, 1.0))  # where the clip's push force lies in its range
@@ -693,7 +665,7 @@ def scene_f(seed: int) -> TrialScene:
 
 def scene_c(seed: int) -> TrialScene:
     """C: tension (A), then press the cable between the grippers into a clip below them."""
-    draw = _Draw(seed)
+    draw = SceneDraws(seed)
     push = draw.uniform("push_force", 1.0, 4.0)
     seat = np.array(
         [
