@@ -159,3 +159,14 @@ def test_stiff_held_cable_reads_without_one_step_spikes() -> None:
     # tolerance reads no force the cable did not exert)
     tight, _, _ = run_scenario(scenario, seed)
     assert tight.success and tight.max_force < 12.0 and tight.true_max_force < 12.0
+
+
+def test_model_and_data_are_the_worlds_own() -> None:
+    import mujoco
+
+    world = peg_scene()
+    assert isinstance(world.model, mujoco.MjModel) and isinstance(world.data, mujoco.MjData)
+    t = float(world.data.time)
+    world.step()  # the world steps the data it hands out
+    assert float(world.data.time) == pytest.approx(t + world.control_period)
+    assert world.model.opt.timestep == world.timestep

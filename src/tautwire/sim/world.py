@@ -327,6 +327,20 @@ class SimWorld:
         """The generated scene (MJCF text, discretisations, clip designs)."""
         return self._scene
 
+    @property
+    def model(self) -> mujoco.MjModel:
+        """The compiled MuJoCo model (for viewers and renderers; do not change its physics)."""
+        return self._model
+
+    @property
+    def data(self) -> mujoco.MjData:
+        """The world's only MuJoCo data (for viewers and renderers; step it through this object).
+
+        Writing to it bypasses the grippers' kinematic drive and the divergence
+        guard: read it, do not change it.
+        """
+        return self._data
+
     def gripper_pose(self, arm: Arm) -> tuple[FloatArray, FloatArray]:
         """Tool centre point [m] and orientation [w, x, y, z] of ``arm``'s gripper."""
         g = self._grippers[arm]
@@ -378,7 +392,7 @@ class SimWorld:
             self._set_fingers(arm, "hold", self._options.hold_grip_force)
 
     def set_twist(self, twist: FloatArray) -> None:
-        """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] [m/s, rad/s], shape (12,)."""
+        """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] in [m/s, rad/s], shape (12,)."""
         tw = np.asarray(twist, dtype=float)
         for k, arm in enumerate(ARMS):
             self._grippers[arm].linear = tw[6 * k : 6 * k + 3].copy()
