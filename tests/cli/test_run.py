@@ -4,8 +4,9 @@ from pathlib import Path
 import pytest
 
 from tautwire.cli.main import main
+from tautwire.scenario.registry import scenario_folder
 
-SCENARIOS = Path(__file__).parents[2] / "scenarios"
+SCENARIOS = scenario_folder()
 
 
 @pytest.mark.slow

@@ -5,8 +5,9 @@ from pathlib import Path
 import pytest
 
 from tautwire.cli.main import main
+from tautwire.scenario.registry import scenario_folder
 
-SCENARIOS = Path(__file__).resolve().parents[2] / "scenarios"
+SCENARIOS = scenario_folder()
 
 
 def test_valid_scenario_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> None:

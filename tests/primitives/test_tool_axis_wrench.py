@@ -10,7 +10,6 @@ wraps the cable half round a fingertip.
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,9 +21,10 @@ from tautwire.model.quaternion import rotate
 from tautwire.primitives.tool_axis import DECIDE_FORCE, ToolAxis
 from tautwire.scenario import Scenario, load_scenario
 from tautwire.scenario.loader import scenario_from_data
+from tautwire.scenario.registry import scenario_path
 from tautwire.scenario.writer import scenario_document
 
-SCENARIO = Path(__file__).parents[2] / "scenarios" / "anchor-rotate.yaml"
+SCENARIO = scenario_path("anchor-rotate")
 PERIOD = 0.004
 
 

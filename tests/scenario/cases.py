@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import pytest
 
 from tautwire.scenario import ScenarioError, parse_scenario
+from tautwire.scenario.registry import scenario_folder
 
-SCENARIOS = Path(__file__).resolve().parents[2] / "scenarios"
+SCENARIOS = scenario_folder()
 EXAMPLE = (SCENARIOS / "peg-and-clip.yaml").read_text(encoding="utf-8")
 
 

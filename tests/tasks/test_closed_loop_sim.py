@@ -1,17 +1,16 @@
 """Closed loop in the MuJoCo world: D then I around an anchor, blind."""
 
-from pathlib import Path
-
 import numpy as np
 import pytest
 
 from tautwire.primitives import make_primitive
 from tautwire.scenario import load_scenario
+from tautwire.scenario.registry import scenario_path
 from tautwire.sim.build import build_world, robot_of, truth_of
 from tautwire.tasks import run_step
 from tautwire.tasks.initial_model import initial_context
 
-SCENARIO = Path(__file__).parents[2] / "scenarios" / "anchor-rotate.yaml"
+SCENARIO = scenario_path("anchor-rotate")
 
 
 def run(seed: int) -> tuple[list[str], np.ndarray, float]:

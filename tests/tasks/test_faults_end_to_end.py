@@ -11,7 +11,6 @@ with a named cause. The true force never exceeds the limit.
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -21,12 +20,13 @@ from tautwire.experiments.run_scenario import run_scenario
 from tautwire.primitives import CAUSES, make_primitive
 from tautwire.robot import Command
 from tautwire.scenario import Scenario, parse_scenario
+from tautwire.scenario.registry import scenario_path
 from tautwire.sim.build import build_world, robot_of, truth_of
 from tautwire.tasks import run_step
 from tautwire.tasks.initial_model import initial_context
 from tautwire.tasks.scenario_guard import scenario_guard
 
-SCENE = (Path(__file__).parents[2] / "scenarios" / "anchor-rotate.yaml").read_text()
+SCENE = scenario_path("anchor-rotate").read_text()
 D_STEP = "  - {primitive: single_arm_tension, arm: left, force: 3.0}\n"
 D_ONLY = SCENE.split("task:")[0] + "task:\n" + D_STEP
 LIMIT = 15.0

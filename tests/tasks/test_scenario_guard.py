@@ -9,6 +9,7 @@ import pytest
 
 from tautwire.model import GRAVITY
 from tautwire.scenario import WORKSPACE, load_scenario
+from tautwire.scenario.registry import scenario_folder
 from tautwire.sim.build import build_world, robot_of
 from tautwire.tasks.robot_guard import TARE_SAMPLES, spike_bound
 from tautwire.tasks.scenario_guard import (
@@ -19,7 +20,7 @@ from tautwire.tasks.scenario_guard import (
     scenario_guard,
 )
 
-SCENARIOS = Path(__file__).parents[2] / "scenarios"
+SCENARIOS = scenario_folder()
 
 
 def test_rest_load_is_the_weight_share_and_the_tolerance_a_multiple_of_the_weight() -> None:

@@ -8,7 +8,6 @@ anchor found within 3 mm.
 """
 
 import math
-from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
@@ -17,9 +16,10 @@ from hypothesis import strategies as st
 from tautwire.experiments.run_scenario import RunResult, run_scenario
 from tautwire.scenario import Scenario, load_scenario
 from tautwire.scenario.loader import scenario_from_data
+from tautwire.scenario.registry import scenario_path
 from tautwire.scenario.writer import scenario_document
 
-SCENARIO = Path(__file__).parents[2] / "scenarios" / "anchor-rotate.yaml"
+SCENARIO = scenario_path("anchor-rotate")
 
 
 def _with_yaw(yaw: float) -> Scenario:

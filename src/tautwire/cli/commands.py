@@ -8,6 +8,7 @@ from tautwire.cli.demo import demo
 from tautwire.cli.estimate import estimate
 from tautwire.cli.reproduce import reproduce
 from tautwire.cli.run import run
+from tautwire.cli.scenarios import scenarios
 from tautwire.cli.validate import validate
 
-ALL: list[click.Command] = [demo, run, validate, estimate, reproduce]
+ALL: list[click.Command] = [demo, run, validate, estimate, reproduce, scenarios]

@@ -7,6 +7,7 @@ from rich.console import Console
 from rich.table import Table
 
 from tautwire.scenario import load_scenario
+from tautwire.scenario.registry import resolve_scenario
 
 #: Output folder of ``--video`` when ``--out`` is not given.
 DEFAULT_VIDEO_OUT = "out/run"
@@ -34,7 +35,7 @@ def run(
     from tautwire.tasks import TickRecord
     from tautwire.viz.scene_recorder import SceneRecorder
 
-    scenario = load_scenario(scenario_file)
+    scenario = load_scenario(resolve_scenario(scenario_file))
     err = Console(stderr=True)
     recorder = SceneRecorder() if video else None
     if video and out_dir is None:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import click
 
 from tautwire.scenario import Scenario, load_scenario
+from tautwire.scenario.registry import resolve_scenario
 
 
 def summarise(scenario: Scenario) -> list[str]:
@@ -70,7 +71,7 @@ def validate(scenario: str) -> int:
     On the first problem found, print one line FILE:LINE: FIELD: what is
     wrong (what is expected) on stderr and exit with status 1.
     """
-    loaded = load_scenario(scenario)
+    loaded = load_scenario(resolve_scenario(scenario))
     for line in summarise(loaded):
         click.echo(line)
     return 0

@@ -3,16 +3,14 @@
 from __future__ import annotations
 
 import time
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from tautwire.robot import Command
 from tautwire.scenario import load_scenario
+from tautwire.scenario.registry import scenario_path
 from tautwire.sim.build import build_world, robot_of
-
-SCENARIOS = Path(__file__).parents[3] / "scenarios"
 
 
 def measure_sim_speed(seconds: float = 10.0) -> dict[str, Any]:
@@ -21,7 +19,7 @@ def measure_sim_speed(seconds: float = 10.0) -> dict[str, Any]:
     The robot is driven at its control period with a slow circular twist for
     ``seconds`` of simulated time, on one core (this process).
     """
-    scenario = load_scenario(SCENARIOS / "anchor-rotate.yaml")
+    scenario = load_scenario(scenario_path("anchor-rotate"))
     world = build_world(scenario)
     robot = robot_of(world)
     n = round(seconds / robot.control_period)
@@ -35,7 +33,7 @@ def measure_sim_speed(seconds: float = 10.0) -> dict[str, Any]:
     wall = time.perf_counter() - t0
     steps = n * world.substeps
     return {
-        "sim_scene": "scenarios/anchor-rotate.yaml",
+        "sim_scene": "anchor-rotate",
         "sim_seconds": n * robot.control_period,
         "sim_realtime_factor": round(n * robot.control_period / wall, 2),
         "sim_step_us": round(wall / steps * 1e6, 2),

@@ -21,11 +21,11 @@ import numpy as np
 
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.scenario import Scenario, load_scenario
+from tautwire.scenario.registry import scenario_path
 from tautwire.sim.ground_truth import GroundTruth
 from tautwire.sim.world import SimWorld
 from tautwire.tasks import TickRecord
 
-SCENARIOS = Path(__file__).parents[3] / "scenarios"
 ITERATIONS_PER_CIRCLE = 125
 MAX_LINEAR_SPEED = 0.09  # m/s: primitive I's speed within the 0.1 m/s limit
 
@@ -165,7 +165,7 @@ def _write_csv(path: Path, series: dict[str, list[Any]]) -> None:
 
 
 def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
-    """Fig. 5b on ``scenarios/anchor-rotate.yaml``; writes fig5b.png/csv/json."""
+    """Fig. 5b on the shipped scenario ``anchor-rotate``; writes fig5b.png/csv/json."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -173,7 +173,7 @@ def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    run = record_rotation(load_scenario(SCENARIOS / "anchor-rotate.yaml"), seed)
+    run = record_rotation(load_scenario(scenario_path("anchor-rotate")), seed)
     s = run["series"]
     k, est, std, truth = series_arrays(s)
     t = np.asarray(s["t"])
@@ -217,12 +217,12 @@ def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
 
 
 def reproduce_fig5c(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
-    """Fig. 5c on ``scenarios/peg-change.yaml``; writes fig5c.png/csv/json."""
+    """Fig. 5c on the shipped scenario ``peg-change``; writes fig5c.png/csv/json."""
     from tautwire.viz.contact_estimation_plot import plot_contact_estimation
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    run = record_rotation(load_scenario(SCENARIOS / "peg-change.yaml"), seed)
+    run = record_rotation(load_scenario(scenario_path("peg-change")), seed)
     s = run["series"]
     k, est, std, truth = series_arrays(s)
     fixtures = s["truth_fixture"]

@@ -1,10 +1,10 @@
 """The main demonstration: a robot finds, blind, where a cable touches the board.
 
-The built-in scenario (``tautwire/data/demo.yaml``, the paper's Fig. 5c
-set-up): a cable from an anchor is tensioned (D) and rotated around the
-anchor (I) until it swings against a peg, which becomes the new contact.
-The robot sees only its gripper poses and the noisy wrist force; the
-simulator's truth scores it afterwards. Writes plots, ``result.json`` and,
+The shipped scenario ``peg-change`` (the paper's Fig. 5c set-up): a cable
+from an anchor is tensioned (D) and rotated around the anchor (I) until
+it swings against a peg, which becomes the new contact. The robot sees
+only its gripper poses and the noisy wrist force; the simulator's truth
+scores it afterwards. Writes plots, ``result.json`` and,
 where offscreen rendering works, a GIF and a PNG snapshot of the scene.
 """
 
@@ -18,9 +18,10 @@ from typing import Any
 
 from tautwire.experiments.fig5bc import record_rotation, series_arrays
 from tautwire.scenario import load_scenario
+from tautwire.scenario.registry import scenario_path
 from tautwire.viz.scene_recorder import SceneRecorder
 
-DEMO_SCENARIO = Path(__file__).parents[1] / "data" / "demo.yaml"
+DEMO_SCENARIO = scenario_path("peg-change")
 log = logging.getLogger(__name__)
 
 

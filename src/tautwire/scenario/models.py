@@ -415,6 +415,8 @@ class Scenario(_Model):
     Attributes:
         version: format version, 1.
         name: free text.
+        description: one line saying what the scenario shows (free text;
+            ``tautwire scenarios`` lists it).
         seed: makes noise and randomisation repeatable.
         robot: robot settings.
         board: the fixtures.
@@ -425,6 +427,7 @@ class Scenario(_Model):
 
     version: Literal[1]
     name: str
+    description: str = ""
     seed: int = 0
     robot: RobotSettings
     board: Board
