@@ -219,3 +219,96 @@ def test_scenario_from_data_reports_field_without_line() -> None:
     with pytest.raises(ScenarioError) as info:
         scenario_from_data(data)
     assert (info.value.line, info.value.field) == (None, "robot.force_limit")
+
+
+def test_every_problem_of_a_file_is_listed_in_file_order() -> None:
+    text = edit("seed: 3", "seed: three")
+    text = edit("  force_limit: 15.0", "  force_limt: 15.0", text)
+    text = edit("radius: 0.006, height: 0.05", "radius: 0.006, hieght: 0.05", text)
+    err = error_of(text)
+    found = [(p.line, p.field) for p in err.problems]
+    assert found == [
+        (line_of(text, "seed:"), "seed"),
+        (line_of(text, "force_limt"), "robot.force_limt"),
+        (line_of(text, "hieght"), "board.fixtures[1].height"),
+        (line_of(text, "hieght"), "board.fixtures[1].hieght"),
+    ]
+    assert str(err).count("\n") == len(found) - 1
+    assert "did you mean 'force_limit'?" in err.problems[1].message
+    assert "did you mean 'height'?" in err.problems[3].message
+
+
+def test_every_reference_problem_is_listed() -> None:
+    text = edit("start: A1", "start: A9")
+    text = edit("via: [P1]", "via: [P7]", text)
+    fields = [p.field for p in error_of(text).problems]
+    assert fields == ["cables[0].start", "cables[0].via[0]"]
+
+
+def test_a_misspelt_fixture_type_gets_a_suggestion() -> None:
+    err = error_of(edit("type: anchor", "type: anchr"))
+    assert "did you mean 'anchor'?" in err.message
+
+
+@pytest.mark.parametrize("number", ["2e2", "2.0e2", "2.0E+2", "200.0"])
+def test_numbers_with_an_exponent_are_numbers(number: str) -> None:
+    s = parse_scenario(edit("stiffness: 200.0", f"stiffness: {number}"))
+    assert s.cables[0].stiffness == 200.0
+
+
+def test_a_file_over_one_megabyte_is_refused_before_it_is_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from tautwire.scenario.bounded_yaml import MAX_BYTES
+
+    path = tmp_path / "big.yaml"
+    with path.open("wb") as fh:
+        fh.truncate(20 * MAX_BYTES)  # sparse: 20 MB that cost no disk
+
+    def no_reading(*args: object, **kwargs: object) -> None:
+        raise AssertionError("the file was opened")
+
+    monkeypatch.setattr(Path, "open", no_reading)
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path)
+    assert str(info.value) == (
+        f"{path}: 20,000,000 bytes is larger than 1,000,000 (expected a scenario of a few kB)"
+    )
+
+
+def test_a_nul_byte_is_one_line_with_line_and_column(tmp_path: Path) -> None:
+    path = tmp_path / "nul.yaml"
+    path.write_bytes(EXAMPLE.replace("name: peg-and-clip", "name: peg\0").encode())
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path)
+    assert str(info.value) == (
+        f"{path}:{line_of(EXAMPLE, 'name:')}: control character U+0000 at column 10 "
+        "(expected text without NUL or control bytes)"
+    )
+
+
+def test_a_byte_order_mark_is_accepted_and_bad_utf8_is_located(tmp_path: Path) -> None:
+    path = tmp_path / "bom.yaml"
+    path.write_bytes(b"\xef\xbb\xbf" + EXAMPLE.encode())
+    assert load_scenario(path).name == "peg-and-clip"
+    path.write_bytes(EXAMPLE.replace("free text", "caf\xe9").encode("latin-1"))
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path)
+    assert str(info.value).startswith(f"{path}:{line_of(EXAMPLE, 'free text')}: not UTF-8 text")
+
+
+def test_an_alias_bomb_is_one_line() -> None:
+    from tests.scenario.test_bounded_yaml import BILLION_LAUGHS
+
+    err = error_of(BILLION_LAUGHS)
+    assert "\n" not in str(err) and "through aliases" in err.message
+
+
+def test_many_problems_are_capped() -> None:
+    from tautwire.scenario.loader import MAX_LISTED
+
+    steps = "".join("  - {primitive: tug}\n" for _ in range(MAX_LISTED + 5))
+    text = EXAMPLE[: EXAMPLE.index("task:")] + "task:\n" + steps
+    err = error_of(text)
+    assert len(err.problems) == MAX_LISTED + 1
+    assert err.problems[-1].message == "and 5 more problem(s) not listed"

@@ -47,7 +47,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         click.echo(f"tautwire: error: {exc.format_message()}", err=True)
         return exc.exit_code if exc.exit_code else 2
     except TautwireError as exc:
-        click.echo(f"tautwire: error: {exc}", err=True)
+        for line in str(exc).splitlines() or ["no message"]:
+            click.echo(f"tautwire: error: {line}", err=True)
         return 1
     except KeyboardInterrupt:
         click.echo("tautwire: interrupted", err=True)

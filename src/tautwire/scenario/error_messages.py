@@ -6,17 +6,37 @@ expectation carries the field's unit where the schema gives one.
 
 from __future__ import annotations
 
+import difflib
 import re
 import types
 import typing
+from collections.abc import Sequence
 from typing import Any, Literal, Union, get_args, get_origin
 
 from pydantic import BaseModel
 from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
-from tautwire.scenario.issue import LOCATION_KEY, Location
+from tautwire.scenario.issue import LOCATION_KEY, MORE_KEY, Location
 from tautwire.scenario.value_text import show
+
+
+def describe_errors(root: type[BaseModel], error: ErrorDetails) -> list[tuple[Location, str]]:
+    """Every problem one validation error stands for, located from the top level.
+
+    A model-level check (references, geometry) reports all its issues in
+    one error; any other error is one problem (:func:`describe_error`).
+
+    Args:
+        root: the model validated at the top level (``Scenario``).
+        error: one entry of ``ValidationError.errors()``.
+    """
+    found = [describe_error(root, error)]
+    if error["type"] == "tautwire":
+        location: Location = tuple(error["loc"])
+        for where, message in (error.get("ctx") or {}).get(MORE_KEY, ()):
+            found.append(((*location, *where), str(message)))
+    return found
 
 
 def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location, str]:
@@ -42,12 +62,15 @@ def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location
         return location, f"missing (expected {_expected(field)})"
     if kind == "extra_forbidden":
         parent = _model_at(root, location[:-1])
-        keys = ", ".join(parent.model_fields) if parent is not None else "the documented keys"
-        return location, f"unknown key (expected one of: {keys})"
+        names = list(parent.model_fields) if parent is not None else []
+        keys = ", ".join(names) or "the documented keys"
+        return location, f"unknown key{did_you_mean(location[-1], names)} (expected one of: {keys})"
     if kind in ("union_tag_invalid", "union_tag_not_found"):
         tags = ctx.get("expected_tags") or _type_tags(root, location)
         tag = ctx.get("tag")
         what = "missing" if tag is None else f"got {show(tag)}"
+        if tag is not None:
+            what += did_you_mean(tag, [t.strip().strip("'") for t in str(tags).split(",")])
         return (*location, "type"), f"{what} (expected one of: {tags})"
     if kind in ("too_short", "too_long"):
         bound = "at least" if kind == "too_short" else "at most"
@@ -72,6 +95,21 @@ def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location
 
 
 _STEP_EXAMPLE = "{primitive: D, arm: left, force: 3.0}"
+
+
+def did_you_mean(given: object, choices: Sequence[str]) -> str:
+    """``", did you mean 'stiffness'?"`` for the choice closest to ``given``, or ``""``.
+
+    Args:
+        given: what the file says (a key or a tag).
+        choices: the valid names.
+    """
+    if not isinstance(given, str):
+        return ""
+    close = difflib.get_close_matches(given, list(choices), n=1, cutoff=0.6)
+    if not close:
+        close = [c for c in choices if c.lower() == given.lower()]
+    return f", did you mean {close[0]!r}?" if close else ""
 
 
 def _plain(expected: str) -> str:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 from pydantic_core import PydanticCustomError
 
@@ -12,6 +12,9 @@ e.g. ``("cables", 0, "stiffness")``."""
 
 LOCATION_KEY = "tautwire_location"
 """Context key under which a located validation error carries its path."""
+
+MORE_KEY = "tautwire_more"
+"""Context key under which a located validation error carries further issues."""
 
 
 class Issue(NamedTuple):
@@ -26,7 +29,9 @@ class Issue(NamedTuple):
     message: str
 
 
-def located_error(message: str, location: Location = ()) -> PydanticCustomError:
+def located_error(
+    message: str, location: Location = (), more: tuple[Issue, ...] = ()
+) -> PydanticCustomError:
     """A validation error whose position is ``location`` below the model that raises it.
 
     Pydantic locates an error raised in a validator at the model being
@@ -36,7 +41,9 @@ def located_error(message: str, location: Location = ()) -> PydanticCustomError:
     Args:
         message: what is wrong (what is expected).
         location: path below the validating model.
+        more: further issues found by the same check (each listed too).
     """
-    return PydanticCustomError(
-        "tautwire", "{message}", {"message": message, LOCATION_KEY: tuple(location)}
-    )
+    context: dict[str, Any] = {"message": message, LOCATION_KEY: tuple(location)}
+    if more:
+        context[MORE_KEY] = tuple((tuple(i.location), i.message) for i in more)
+    return PydanticCustomError("tautwire", "{message}", context)

@@ -437,12 +437,16 @@ class Scenario(_Model):
 
     @model_validator(mode="after")
     def _consistent(self) -> Scenario:
-        """Check names, references and geometry; raise the first issue found."""
+        """Check names, references and geometry; raise every issue found.
+
+        Geometry is checked only once the references hold (a wrong name
+        would make it meaningless).
+        """
         issues = check_references(self)
         if not issues:
             issues = check_geometry(self)
         if issues:
-            raise located_error(issues[0].message, issues[0].location)
+            raise located_error(issues[0].message, issues[0].location, tuple(issues[1:]))
         return self
 
     def fixture(self, name: str) -> Anchor | Peg | Clip:
