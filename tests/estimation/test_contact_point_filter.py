@@ -263,3 +263,40 @@ def test_declare_change_restarts_from_the_prior_and_records_it():
     flt.make_round(0.01, 0.002)
     flt.reset()
     assert flt.radius is None and not flt.running
+
+
+def sawtooth_peg_lines(seed, radius=0.013, n=42, amplitude=0.003):
+    """Lines round a peg whose offset from the tangent saws by +-``amplitude`` (a cable that
+    leaves from discrete vertices), as :func:`round_peg_lines` otherwise."""
+    out = []
+    for j, (p, f, side) in enumerate(round_peg_lines(seed, radius=radius, n=n)):
+        wobble = amplitude * (2.0 * ((j / 14.0) % 1.0) - 1.0)
+        out.append((p - wobble * side, f, side))
+    return out
+
+
+@pytest.mark.parametrize("prior_radius", [0.013, 0.011, 0.015])
+def test_a_considered_radius_keeps_its_prior_and_the_std_covers_its_cost(prior_radius):
+    # a third of a turn with sawing offsets: the radius is a consider parameter
+    # (Schmidt-Kalman): it stays at its prior, and the axis's reported
+    # covariance carries what a wrong prior costs
+    for seed in range(6):
+        lines = sawtooth_peg_lines(seed)
+        start = ([p + prior_radius * s for p, _, s in lines[:3]], [f for _, f, _ in lines[:3]])
+        flt = ContactPointFilter(detect_changes=False, process_noise=0.0)
+        flt.restart(
+            *start,
+            np.zeros(3),
+            0.01**2 * np.eye(3),
+            radius=(prior_radius, 0.002),
+            consider_radius=True,
+        )
+        for p, f, s in lines[3:]:
+            flt.update(p, f, side=s)
+        assert flt.radius == prior_radius
+        err = flt.x[:2]
+        P = flt.P[:2, :2]
+        nees = float(err @ np.linalg.solve(P, err))
+        assert nees <= 11.8  # chi-square, 2 dof, 99.7 %
+        if prior_radius == 0.013:
+            assert float(np.linalg.norm(err)) <= 2.5e-3

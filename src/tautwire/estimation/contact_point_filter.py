@@ -211,6 +211,7 @@ class ContactPointFilter:
         self.radius: float | None = None
         self._p_cr: FloatArray = np.zeros(3)  # cov(x, radius) [m^2]  # (3,)
         self._p_rr = 0.0  # var(radius) [m^2]
+        self._radius_considered = False  # R a consider parameter (make_round)
         self.changes: list[int] = []
         #: The estimate that the last declared change replaced (None before any).
         self.replaced: FilterState | None = None
@@ -439,6 +440,7 @@ class ContactPointFilter:
         f_chord: ArrayLike | None = None,
         radius: tuple[float, float] | None = None,
         offset_variances: ArrayLike | None = None,
+        consider_radius: bool = False,
     ) -> None:
         """Start afresh at a new contact from the samples that saw it.
 
@@ -458,6 +460,7 @@ class ContactPointFilter:
                 whose samples ``p_grippers`` are already shifted by R onto
                 its axis; None for a point contact.
             offset_variances: Variance [m^2] of each sample's line offset.  # (N,)
+            consider_radius: Keep R at its prior (see :meth:`make_round`).
         """
         ps = np.asarray(p_grippers, dtype=float).reshape(-1, 3)
         fs = np.asarray(f_sens, dtype=float).reshape(-1, 3)
@@ -483,9 +486,9 @@ class ContactPointFilter:
         self.detector.reset()
         self.radius = None
         if radius is not None:
-            self.make_round(*radius)
+            self.make_round(*radius, consider=consider_radius)
 
-    def make_round(self, radius: float, std: float) -> None:
+    def make_round(self, radius: float, std: float, consider: bool = False) -> None:
         """Treat the contact as round: add its radius R [m] (prior std [m]) as a 4th state.
 
         A cable leaves a round contact tangentially, so its lines miss the
@@ -494,11 +497,26 @@ class ContactPointFilter:
 
             z = H p_g = H p_c - R H side,
 
-        which is linear in (p_c, R). R starts uncorrelated with p_c and takes
-        a random walk (``RADIUS_PROCESS_NOISE``): how far the cable's centre
-        line keeps from the axis depends on how it bends around the peg.
+        which is linear in (p_c, R). R starts uncorrelated with p_c.
+
+        With ``consider`` (a peg), R is a consider parameter (the Schmidt-
+        Kalman filter): its gain is zero, so R stays at its prior, but its
+        variance and its covariance with p_c are carried, and the reported
+        P of p_c includes what R's uncertainty does to it. On a partial wrap R
+        and the axis's position along the wrap's bisector are nearly
+        interchangeable: estimated, R ran to 18-22 mm where the lines kept
+        11-15 mm (robustness trials 29 and 38: the axis 15-17 mm off at a
+        reported std of 4 mm). Without ``consider`` R is estimated and takes a
+        random walk (``RADIUS_PROCESS_NOISE``): the signed offset at which a
+        circled point's lines pass it.
+
+        Args:
+            radius: Prior mean of R [m].
+            std: Its prior std [m].
+            consider: Keep R at its prior (a consider parameter).
         """
         self.radius = float(radius)
+        self._radius_considered = bool(consider)
         self._p_cr = np.zeros(3)
         self._p_rr = float(std) ** 2
 
@@ -509,14 +527,23 @@ class ContactPointFilter:
         prior_mean: ArrayLike,
         prior_covariance: ArrayLike,
         radius: tuple[float, float] | None = None,
+        consider_radius: bool = False,
     ) -> None:
         """Declare a contact change at the last sample given to :meth:`update`.
 
         For a caller that knows more than the innovations (e.g. a gated line
         that meets a fixture of the board design): restart from the samples
-        with that prior and record the change in :attr:`changes`.
+        with that prior and record the change in :attr:`changes`
+        (``radius`` and ``consider_radius`` as in :meth:`restart`).
         """
-        self.restart(p_grippers, f_sens, prior_mean, prior_covariance, radius=radius)
+        self.restart(
+            p_grippers,
+            f_sens,
+            prior_mean,
+            prior_covariance,
+            radius=radius,
+            consider_radius=consider_radius,
+        )
         self.changes.append(self._count - 1)
 
     # ------------------------------------------------------------------ update
@@ -651,7 +678,7 @@ class ContactPointFilter:
         P4 = np.zeros((4, 4))
         P4[:3, :3] = self.P + self.Q  # P = F P F' + Q
         P4[:3, 3] = P4[3, :3] = self._p_cr
-        P4[3, 3] = self._p_rr + RADIUS_PROCESS_NOISE
+        P4[3, 3] = self._p_rr + (0.0 if self._radius_considered else RADIUS_PROCESS_NOISE)
         y = H @ p - H4 @ x4  # y = z - H x
         PHt = P4 @ H4.T  # (4, 2)
         S = H4 @ PHt + r2 * np.eye(2)  # S = H P H' + R
@@ -669,8 +696,10 @@ class ContactPointFilter:
                 return self._result(False, nis, False)
             self._recent.clear()
         K = PHt @ SI  # K = P H' S^-1
+        if self._radius_considered:
+            K[3, :] = 0.0  # Schmidt-Kalman: R is considered, not estimated
         x4 = x4 + K @ y  # x = x + K y
-        I_KH = np.eye(4) - K @ H4
+        I_KH = np.eye(4) - K @ H4  # the Joseph form below holds for any gain
         P4 = I_KH @ P4 @ I_KH.T + r2 * (K @ K.T)  # P = (I - K H) P (I - K H)' + K R K'
         self.x = x4[:3].copy()
         self.radius = float(x4[3])

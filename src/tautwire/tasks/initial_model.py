@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.round_contact import RADIUS_MARGIN
 from tautwire.model import FeatureKind, PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
 from tautwire.primitives.context import ClipInfo
@@ -134,7 +135,7 @@ def initial_context(
     arm = sensing_arm(scenario, spec)
     fixtures = {f.name: fixture_point(scenario, f.name) for f in scenario.board.fixtures}
     round_fixtures = {
-        f.name: (fixture_point(scenario, f.name), f.radius + spec.radius)
+        f.name: (fixture_point(scenario, f.name), f.radius + spec.radius + RADIUS_MARGIN)
         for f in scenario.board.fixtures
         if isinstance(f, Peg)
     }
