@@ -22,7 +22,6 @@ from tautwire.estimation import (
 from tautwire.model import PathGraph
 from tautwire.primitives.model_estimator import ModelEstimator
 from tautwire.robot import Arm
-from tautwire.scenario.models import CLIP_LENGTH
 
 FloatArray = NDArray[np.float64]
 
@@ -35,13 +34,14 @@ class ClipInfo:
         position: Where a clipped cable sits (the seat) [m].  # (3,)
         yaw: Direction of the slot about world z [rad].
         push_force: Force [N] the clip needs to let the cable in.
-        length: Length [m] of the clip along its slot.
+        length: Length [m] of the clip along its slot (a scenario's clips
+            all have ``tautwire.scenario.models.CLIP_LENGTH``).
     """
 
     position: FloatArray
     yaw: float
     push_force: float
-    length: float = CLIP_LENGTH
+    length: float
 
     @property
     def slot(self) -> FloatArray:

@@ -10,9 +10,11 @@ from tautwire.robot.command import Command, GripperCommand
 from tautwire.robot.communication_error import RobotCommunicationError
 from tautwire.robot.observation import GripperState, Observation, Wrench
 from tautwire.robot.robot import Robot
+from tautwire.robot.workspace import WORKSPACE, Workspace
 
 __all__ = [
     "ARMS",
+    "WORKSPACE",
     "Arm",
     "Command",
     "GripperCommand",
@@ -20,6 +22,7 @@ __all__ = [
     "Observation",
     "Robot",
     "RobotCommunicationError",
+    "Workspace",
     "Wrench",
     "arm_index",
 ]

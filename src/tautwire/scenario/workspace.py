@@ -1,41 +1,21 @@
-"""The region that the robot's grippers can reach and fixtures may occupy."""
+"""Where a scenario's grippers and fixtures may lie, and how far apart they must be.
+
+The box itself (:class:`Workspace`, :data:`WORKSPACE`) is the robot's
+(:mod:`tautwire.robot.workspace`): the guard that keeps a run inside it is
+core code and must not need the scenario layer.
+"""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import dataclass
+from tautwire.robot.workspace import WORKSPACE, Workspace
 
-
-@dataclass(frozen=True)
-class Workspace:
-    """An axis-aligned box in the world frame.
-
-    Attributes:
-        lower: smallest x, y, z [m].
-        upper: largest x, y, z [m].
-    """
-
-    lower: tuple[float, float, float]
-    upper: tuple[float, float, float]
-
-    def contains(self, point: Sequence[float]) -> bool:
-        """Whether ``point`` (3,) [m] lies in the box (boundary included)."""
-        return all(lo <= p <= hi for lo, p, hi in zip(self.lower, point, self.upper, strict=True))
-
-    def describe(self) -> str:
-        """The box in words, e.g. ``'x in [-0.2, 0.8], y in [-0.6, 0.6], z in [0, 0.6] m'``."""
-        axes = (
-            f"{axis} in [{lo:g}, {hi:g}]"
-            for axis, lo, hi in zip("xyz", self.lower, self.upper, strict=True)
-        )
-        return ", ".join(axes) + " m"
-
-
-WORKSPACE = Workspace(lower=(-0.2, -0.6, 0.0), upper=(0.8, 0.6, 0.6))
-"""A generous box for a table-top board in front of a dual-arm robot: the
-board surface is z = 0 and the robot stands behind x = 0 facing +x, with its
-two arms reaching left (+y) and right (-y). Gripper start positions and every
-fixture (a peg up to its top) must lie inside it."""
+__all__ = [
+    "GRIPPER_MIN_DISTANCE",
+    "HOLD_MIN_SEPARATION",
+    "ROUTE_TOLERANCE",
+    "WORKSPACE",
+    "Workspace",
+]
 
 GRIPPER_MIN_DISTANCE = 0.03
 """The two grippers' start positions must be at least this far apart [m]

@@ -1,5 +1,9 @@
 """The robot's prior picture of a cable, from the scenario's board design.
 
+This module converts a scenario (the ``sim`` extra's yaml and pydantic
+layer) into the core's plain objects; it imports without that layer, which
+only a caller that has a scenario needs.
+
 What the robot knows before it moves: where the fixtures were designed to be,
 which fixtures the cable was routed along, its length and mass per length,
 and where its grippers hold it. Not the cable's actual state: contacts are
@@ -7,6 +11,8 @@ estimated online from the force.
 """
 
 from __future__ import annotations
+
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
@@ -17,8 +23,10 @@ from tautwire.model import FeatureKind, PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
 from tautwire.primitives.context import ClipInfo
 from tautwire.robot import Arm
-from tautwire.scenario import Scenario
-from tautwire.scenario.models import Anchor, CableSpec, Clip, Peg
+
+if TYPE_CHECKING:  # the scenario layer (yaml, pydantic) is the sim extra's
+    from tautwire.scenario import Scenario
+    from tautwire.scenario.models import CableSpec
 
 FloatArray = NDArray[np.float64]
 
@@ -31,7 +39,7 @@ def fixture_point(scenario: Scenario, name: str, height: float | None = None) ->
     """
     f = scenario.fixture(name)
     p = np.asarray(f.position, dtype=float)
-    if isinstance(f, Peg):
+    if f.type == "peg":
         z = (
             p[2] + 0.5 * f.height
             if height is None
@@ -59,7 +67,7 @@ def initial_graph(scenario: Scenario, cable: CableSpec) -> PathGraph:
     arcs: list[float] = []
     if cable.start is not None:
         start = scenario.fixture(cable.start)
-        if not isinstance(start, Anchor):
+        if start.type != "anchor":
             raise InvalidArgumentError(f"cable {cable.name!r} must start at an anchor")
         points.append(np.asarray(start.position, dtype=float))
         kinds.append("fixed")
@@ -130,6 +138,9 @@ def initial_context(
             (the controller adapts; the true stiffness is not known).
         estimation_period: Period [s] of the contact filter's iterations.
     """
+    # the scenario layer is there whenever a scenario is (the sim extra)
+    from tautwire.scenario.models import CLIP_LENGTH
+
     spec = scenario.cable(cable) if cable is not None else scenario.cables[0]
     graph = initial_graph(scenario, spec)
     arm = sensing_arm(scenario, spec)
@@ -137,12 +148,14 @@ def initial_context(
     round_fixtures = {
         f.name: (fixture_point(scenario, f.name), f.radius + spec.radius + RADIUS_MARGIN)
         for f in scenario.board.fixtures
-        if isinstance(f, Peg)
+        if f.type == "peg"
     }
     clips = {
-        f.name: ClipInfo(np.asarray(f.position, dtype=float), float(f.yaw), float(f.push_force))
+        f.name: ClipInfo(
+            np.asarray(f.position, dtype=float), float(f.yaw), float(f.push_force), CLIP_LENGTH
+        )
         for f in scenario.board.fixtures
-        if isinstance(f, Clip)
+        if f.type == "clip"
     }
     robot = scenario.robot
     return make_context(

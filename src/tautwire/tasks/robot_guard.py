@@ -56,7 +56,7 @@ from tautwire.robot import (
     RobotCommunicationError,
     Wrench,
 )
-from tautwire.scenario.workspace import Workspace
+from tautwire.robot.workspace import Workspace
 from tautwire.tasks.sensor_tare import SensorTare
 
 FloatArray = NDArray[np.float64]

@@ -11,13 +11,17 @@ a slack cable's sag tension and the hanging ends the design does not place.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from tautwire.model import GRAVITY
-from tautwire.robot import Robot
-from tautwire.scenario import WORKSPACE, Scenario, Workspace
+from tautwire.robot import WORKSPACE, Robot, Workspace
 from tautwire.tasks.initial_model import initial_graph
 from tautwire.tasks.robot_guard import TARE_SAMPLES, RobotGuard
+
+if TYPE_CHECKING:  # the scenario layer (yaml, pydantic) is the sim extra's
+    from tautwire.scenario import Scenario
 
 #: The tare leaves alone any offset within this many held-cable weights of
 #: the expected load.
