@@ -2,11 +2,13 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from scipy.spatial.transform import Rotation
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import (
     as_quaternion,
     conjugate,
+    from_rotation,
     multiply,
     orientation_along,
     rotate,
@@ -29,7 +31,8 @@ def test_orientation_along_points_x_along_the_direction(v: list[float]) -> None:
 def test_multiply_matches_scipy() -> None:
     rng = np.random.default_rng(0)
     a, b = as_quaternion(rng.normal(size=4)), as_quaternion(rng.normal(size=4))
-    expected = (to_rotation(a) * to_rotation(b)).as_quat(scalar_first=True)
+    x, y, z, w = (to_rotation(a) * to_rotation(b)).as_quat()  # SciPy's order
+    expected = np.array([w, x, y, z])
     product = multiply(a, b)
     assert abs(abs(np.dot(product, expected)) - 1.0) < 1e-12
     assert multiply(a, conjugate(a)) == pytest.approx([1, 0, 0, 0])
@@ -65,3 +68,12 @@ def test_turn_x_onto_takes_the_tool_x_axis_onto_a_direction() -> None:
         d = rng.normal(size=3)
         turned = turn_x_onto(q, d)
         assert np.allclose(rotate(turned, [1.0, 0.0, 0.0]), d / np.linalg.norm(d))
+
+
+@pytest.mark.parametrize("angle", [0.3, -1.2, 2.9])
+def test_scipy_rotations_keep_the_scalar_first_convention(angle: float) -> None:
+    # [w, x, y, z] about z by angle; SciPy's own order is [x, y, z, w] (any SciPy >= 1.11)
+    q = np.array([np.cos(angle / 2), 0.0, 0.0, np.sin(angle / 2)])
+    rotated = to_rotation(q).apply([1.0, 0.0, 0.0])
+    np.testing.assert_allclose(rotated, [np.cos(angle), np.sin(angle), 0.0], atol=1e-12)
+    np.testing.assert_allclose(from_rotation(Rotation.from_rotvec([0, 0, angle])), q, atol=1e-12)

@@ -1,8 +1,9 @@
 """Quaternion helpers in the project's [w, x, y, z] convention.
 
 SciPy's :class:`~scipy.spatial.transform.Rotation` is used for the algebra;
-it is called with ``scalar_first=True`` so that [w, x, y, z] is kept at every
-interface.
+its quaternions are [x, y, z, w], reordered here so that [w, x, y, z] is kept
+at every interface (not with ``scalar_first=True``: SciPy has it only since
+1.14, and the floor is 1.11).
 """
 
 from __future__ import annotations
@@ -39,12 +40,14 @@ def as_quaternion(q: ArrayLike) -> FloatArray:
 
 def to_rotation(q: ArrayLike) -> Rotation:
     """SciPy rotation of the quaternion ``q`` = [w, x, y, z]."""
-    return Rotation.from_quat(as_quaternion(q), scalar_first=True)
+    w, x, y, z = as_quaternion(q)
+    return Rotation.from_quat([x, y, z, w])
 
 
 def from_rotation(rotation: Rotation) -> FloatArray:
     """Quaternion [w, x, y, z] (w >= 0) of a SciPy rotation."""
-    return as_quaternion(rotation.as_quat(scalar_first=True))
+    x, y, z, w = rotation.as_quat()
+    return as_quaternion([w, x, y, z])
 
 
 def multiply(q1: ArrayLike, q2: ArrayLike) -> FloatArray:
