@@ -92,7 +92,7 @@ class SafetyLimits:
 
         Args:
             twist: Individual twist [v_left, w_left, v_right, w_right]
-                [m/s, rad/s].  # (12,)
+                in [m/s, rad/s].  # (12,)
 
         Returns:
             The limited twist (a new array).  # (12,)

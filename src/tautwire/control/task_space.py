@@ -1,7 +1,7 @@
 """Individual and coordinated (absolute/relative) task space of the two arms.
 
 The robot takes the **individual** 12-D task-space velocity
-[v_left, w_left, v_right, w_right] [m/s, rad/s], world frame. Coordinated
+[v_left, w_left, v_right, w_right] in [m/s, rad/s], world frame. Coordinated
 primitives (A, B, C) control instead the **absolute** and **relative** pose
 of the two grippers [Gabriel]. The frames are defined once, here:
 
@@ -264,11 +264,11 @@ def coordinated_twist(twist: ArrayLike, pose: DualPose) -> FloatArray:
     """Coordinated twist [v_abs, w_abs, v_rel, w_rel] of an individual twist.
 
     Args:
-        twist: [v_left, w_left, v_right, w_right] [m/s, rad/s].  # (12,)
+        twist: [v_left, w_left, v_right, w_right] in [m/s, rad/s].  # (12,)
         pose: Current individual pose of both grippers.
 
     Returns:
-        [v_abs, w_abs, v_rel, w_rel] [m/s, rad/s], world frame.  # (12,)
+        [v_abs, w_abs, v_rel, w_rel] in [m/s, rad/s], world frame.  # (12,)
     """
     return _apply(twist, pose, coordinated=True)
 
@@ -277,11 +277,11 @@ def individual_twist(twist: ArrayLike, pose: DualPose) -> FloatArray:
     """Individual twist [v_left, w_left, v_right, w_right] of a coordinated twist.
 
     Args:
-        twist: [v_abs, w_abs, v_rel, w_rel] [m/s, rad/s], world frame.  # (12,)
+        twist: [v_abs, w_abs, v_rel, w_rel] in [m/s, rad/s], world frame.  # (12,)
         pose: Current individual pose of both grippers.
 
     Returns:
-        [v_left, w_left, v_right, w_right] [m/s, rad/s], world frame.  # (12,)
+        [v_left, w_left, v_right, w_right] in [m/s, rad/s], world frame.  # (12,)
     """
     return _apply(twist, pose, coordinated=False)
 

@@ -33,7 +33,9 @@ class ParallelSliding(SlidingPrimitive):
         slide_arm: The gripper the cable slides through.
         distance: How far [m] the grippers part.
         friction_force: Desired sliding friction f_slid [N].
-        **kwargs: See :class:`SlidingPrimitive`.
+
+    The other parameters (speed, tolerances, timeout) are those of
+    :class:`SlidingPrimitive`.
     """
 
     name = "parallel_sliding"
