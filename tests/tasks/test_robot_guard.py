@@ -13,8 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tautwire.errors import InvalidArgumentError, SimulationError
-from tautwire.robot import Command, GripperCommand, Robot, RobotCommunicationError
-from tautwire.scenario import WORKSPACE
+from tautwire.robot import WORKSPACE, Command, GripperCommand, Robot, RobotCommunicationError
 from tautwire.tasks.robot_guard import (
     ERROR_TIME,
     STALE_TIME,
