@@ -29,6 +29,7 @@ from tautwire.scenario.primitive_catalogue import (
     primitive_choices,
 )
 from tautwire.scenario.references import check_references
+from tautwire.scenario.route_check import check_routes
 
 
 def _sequence_to_tuple(value: Any) -> Any:
@@ -205,6 +206,22 @@ def _one_or_list(value: Any) -> Any:
     return [value] if isinstance(value, dict) else value
 
 
+class RouteEntry(_Model):
+    """One fixture of a cable's target route (SCENARIO.md, "Target routes and the planner").
+
+    Attributes:
+        fixture: the peg or clip the cable passes.
+        side: for a peg, the side of the cable the peg stays on, seen along
+            the route from the cable's start (required for a peg, not
+            allowed for a clip).
+        wind: for a peg, full turns of the cable around it (>= 0).
+    """
+
+    fixture: str = Field(min_length=1)
+    side: Literal["left", "right"] | None = None
+    wind: int = Field(0, ge=0, description="full turns around a peg")
+
+
 class CableSpec(_Model):
     """One cable: its physics, where it starts, its routing and who holds it.
 
@@ -217,6 +234,8 @@ class CableSpec(_Model):
         start: the anchor that holds the first end (``None``: a free end).
         via: fixtures the cable initially bears against, in order.
         held_by: one or two holds, by different arms.
+        route: the target route, in order from the cable's start (empty:
+            none; the planner turns routes into a task).
     """
 
     name: str = Field(min_length=1)
@@ -229,6 +248,7 @@ class CableSpec(_Model):
     held_by: Annotated[list[Hold], BeforeValidator(_one_or_list)] = Field(
         min_length=1, max_length=2, description="one hold or a list of two"
     )
+    route: list[RouteEntry] = []
 
 
 class TaskStep(_Model):
@@ -245,7 +265,7 @@ class TaskStep(_Model):
 
     primitive: str
     letter: str
-    params: dict[str, float | str | list[float]] = {}
+    params: dict[str, bool | float | str | list[float]] = {}
 
     @model_validator(mode="before")
     @classmethod
@@ -421,7 +441,7 @@ class Scenario(_Model):
         robot: robot settings.
         board: the fixtures.
         cables: the cables.
-        task: primitives run in order.
+        task: primitives run in order (may be left out when cables carry routes).
         faults: faults the simulator injects (simulation only).
     """
 
@@ -432,7 +452,7 @@ class Scenario(_Model):
     robot: RobotSettings
     board: Board
     cables: list[CableSpec]
-    task: list[TaskStep]
+    task: list[TaskStep] = []
     faults: list[Fault] = []
 
     @model_validator(mode="after")
@@ -442,7 +462,7 @@ class Scenario(_Model):
         Geometry is checked only once the references hold (a wrong name
         would make it meaningless).
         """
-        issues = check_references(self)
+        issues = check_references(self) + check_routes(self)
         if not issues:
             issues = check_geometry(self)
         if issues:

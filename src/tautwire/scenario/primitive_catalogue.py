@@ -1,8 +1,11 @@
-"""The nine primitives a task step may name, with their parameters.
+"""The nine primitives and the moves a task step may name, with their parameters.
 
 The table follows SCENARIO.md ("Primitives") and the letters of the paper's
 results table (paper/NOTES.md): A-C coordinated (both arms), D-I individual.
-A step names its primitive by canonical name or by letter.
+A step names its primitive by canonical name or by letter. The moves
+between primitives (``move``, ``release``; SCENARIO.md, "Moves between
+primitives") have names but no letter. Every step may name its ``cable``
+(SCENARIO.md, "A step names its cable").
 """
 
 from __future__ import annotations
@@ -15,15 +18,20 @@ from typing import Literal
 from tautwire.errors import InvalidArgumentError
 from tautwire.scenario.value_text import show
 
-ParamKind = Literal["number", "arm", "clip", "fixture", "vector3"]
+ParamKind = Literal[
+    "number", "arm", "clip", "fixture", "cable", "vector3", "position", "quaternion", "flag"
+]
 """How a parameter's value is written: a number, an arm name (``left`` or
-``right``), the name of a clip or of any fixture, or three numbers."""
+``right``), the name of a clip, of any fixture or of a cable, three numbers
+(a direction, normalised; or a position or offset, as given), four numbers
+(a quaternion [w, x, y, z], normalised), or ``true``/``false``."""
 
 Bound = Literal["any", "positive", "non_negative", "non_zero"]
 """The range a number must lie in."""
 
-ParamValue = float | str | list[float]
-"""A checked parameter value (numbers as float, names as str, vectors as list)."""
+ParamValue = bool | float | str | list[float]
+"""A checked parameter value (flags as bool, numbers as float, names as str,
+vectors as list)."""
 
 
 class ParameterError(InvalidArgumentError):
@@ -69,7 +77,11 @@ class ParamSpec:
             "arm": "'left' or 'right'",
             "clip": "the name of a clip",
             "fixture": "the name of a fixture",
+            "cable": "the name of a cable",
             "vector3": "a non-zero list of 3 numbers",
+            "position": "a list of 3 numbers",
+            "quaternion": "a non-zero list of 4 numbers [w, x, y, z]",
+            "flag": "true or false",
         }[self.kind]
         return f"{what}: {self.meaning}"
 
@@ -86,13 +98,20 @@ class ParamSpec:
             if number is None or not _in_bound(number, self.bound):
                 raise wrong
             return number
-        if self.kind == "vector3":
-            if not isinstance(value, list | tuple) or len(value) != 3:
+        if self.kind == "flag":
+            if not isinstance(value, bool):
+                raise wrong
+            return value
+        if self.kind in ("vector3", "position", "quaternion"):
+            size = 4 if self.kind == "quaternion" else 3
+            if not isinstance(value, list | tuple) or len(value) != size:
                 raise wrong
             components = [_as_number(c) for c in value]
             if any(c is None for c in components):
                 raise wrong
             vector = [float(c) for c in components if c is not None]
+            if self.kind == "position":
+                return vector
             norm = math.sqrt(sum(c * c for c in vector))
             if norm < 1e-9:
                 raise wrong
@@ -125,14 +144,15 @@ def _in_bound(number: float, bound: Bound) -> bool:
 
 @dataclass(frozen=True)
 class PrimitiveSpec:
-    """A primitive: its names and parameters.
+    """A primitive (or a move): its names and parameters.
 
     Attributes:
         name: canonical name, e.g. ``"single_arm_tension"``.
-        letter: the paper's letter, e.g. ``"D"``.
+        letter: the paper's letter, e.g. ``"D"`` (``""`` for a move, which has none).
         title: the paper's name, e.g. ``"Single arm DLO Tension"``.
         required: parameters that every step must give.
         optional: parameters that a step may give.
+        one_of: optional parameters of which a step must give exactly one.
     """
 
     name: str
@@ -140,10 +160,11 @@ class PrimitiveSpec:
     title: str
     required: tuple[ParamSpec, ...]
     optional: tuple[ParamSpec, ...] = ()
+    one_of: tuple[str, ...] = ()
 
     @property
     def parameters(self) -> tuple[ParamSpec, ...]:
-        """Required then optional parameters."""
+        """Required then optional parameters (without the ones every step has)."""
         return self.required + self.optional
 
     def check_params(self, values: Mapping[str, object]) -> dict[str, ParamValue]:
@@ -159,14 +180,22 @@ class PrimitiveSpec:
         Raises:
             ParameterError: for the first unknown, missing or invalid parameter.
         """
-        names = ", ".join(p.name for p in self.parameters) or "none"
+        names = ", ".join(p.name for p in self.parameters + STEP_PARAMETERS)
         for name in values:
             if self.parameter(name) is None:
                 raise ParameterError(
                     name, f"unknown parameter of {self.name} (expected only: {names})"
                 )
+        given = [name for name in self.one_of if name in values]
+        if self.one_of and len(given) != 1:
+            choice = " or ".join(self.one_of)
+            raise ParameterError(
+                given[-1] if given else self.one_of[0],
+                f"{'both given' if given else 'missing'} (expected {choice}, one of them,"
+                f" in a {self.name} step)",
+            )
         checked: dict[str, ParamValue] = {}
-        for spec in self.parameters:
+        for spec in self.parameters + STEP_PARAMETERS:
             if spec.name in values:
                 try:
                     checked[spec.name] = spec.check(values[spec.name])
@@ -182,8 +211,8 @@ class PrimitiveSpec:
         return checked
 
     def parameter(self, name: str) -> ParamSpec | None:
-        """The parameter called ``name``, or ``None``."""
-        for spec in self.parameters:
+        """The parameter called ``name`` (its own or one every step has), or ``None``."""
+        for spec in self.parameters + STEP_PARAMETERS:
             if spec.name == name:
                 return spec
         return None
@@ -196,6 +225,11 @@ _DISTANCE = ParamSpec(
 )
 _FRICTION = ParamSpec("friction_force", "number", "tension kept while sliding [N]", "positive")
 _CLIP = ParamSpec("clip", "clip", "the clip to push the cable into")
+
+STEP_PARAMETERS: tuple[ParamSpec, ...] = (
+    ParamSpec("cable", "cable", "the cable the step works on (default: the one its gripper holds)"),
+)
+"""Optional parameters of every step, primitive or move."""
 
 PRIMITIVES: tuple[PrimitiveSpec, ...] = (
     PrimitiveSpec("parallel_tension", "A", "Parallel DLO Tension", (_FORCE,)),
@@ -249,20 +283,40 @@ PRIMITIVES: tuple[PrimitiveSpec, ...] = (
 )
 """The nine primitives, in letter order."""
 
+MOVES: tuple[PrimitiveSpec, ...] = (
+    PrimitiveSpec(
+        "move",
+        "",
+        "Move a gripper",
+        (_ARM,),
+        (
+            ParamSpec("to", "position", "where the tool centre point goes, world frame [m]"),
+            ParamSpec("by", "position", "offset of the tool centre point, world frame [m]"),
+            ParamSpec("orientation", "quaternion", "end orientation [w, x, y, z], normalised"),
+            ParamSpec(
+                "taut", "flag", "keep the held cable under its present tension", default=True
+            ),
+        ),
+        one_of=("to", "by"),
+    ),
+    PrimitiveSpec("release", "", "Release the cable", (_ARM,)),
+)
+"""The moves between primitives (no letter)."""
+
 
 def primitive_choices() -> str:
-    """The valid names and letters, e.g. ``'parallel_tension (A), ...'``."""
-    return ", ".join(f"{p.name} ({p.letter})" for p in PRIMITIVES)
+    """The valid names and letters, e.g. ``'parallel_tension (A), ..., move, release'``."""
+    return ", ".join(f"{p.name} ({p.letter})" if p.letter else p.name for p in PRIMITIVES + MOVES)
 
 
 def find_primitive(name_or_letter: str) -> PrimitiveSpec:
-    """Return the primitive with this canonical name or letter.
+    """Return the primitive or move with this canonical name or letter.
 
     Raises:
         InvalidArgumentError: if there is none; the message lists the choices.
     """
-    for spec in PRIMITIVES:
-        if name_or_letter in (spec.name, spec.letter):
+    for spec in PRIMITIVES + MOVES:
+        if name_or_letter == spec.name or (spec.letter and name_or_letter == spec.letter):
             return spec
     raise InvalidArgumentError(
         f"unknown primitive {name_or_letter!r} (expected one of: {primitive_choices()})"

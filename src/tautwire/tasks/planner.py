@@ -1,0 +1,955 @@
+"""The route planner: turns cables' target routes into the steps of a task.
+
+A route (SCENARIO.md, "Target routes and the planner") lists, in order from
+a cable's start anchor, the pegs it passes (on a side, with optional
+windings) and the clips it is pushed into. The planner routes one cable
+after the other with the gripper that holds it (which must carry a force
+sensor), in the primitives' own terms:
+
+- **tension**: D pulls the cable taut against its last fixed point;
+- **peg**: ``move`` (taut) sweeps the cable onto the peg from the side the
+  route asks for, in waypoints at most ``SWEEP_STEP`` apart about the last
+  fixed point, after lifting the cable over the peg if it lies on the other
+  side; I (``rotate_around_feature_point``) then winds the cable round it
+  by the rest of the wrap towards the next entry plus the windings (left:
+  counter-clockwise, positive about +z);
+- **clip**: ``move`` onto the line from the last fixed point over the seat,
+  G (align) and F (single-arm clipping) when the slot runs within
+  ``SLOT_ANGLE`` of that line; otherwise the free gripper grasps the cable
+  (H), both press it in (C) and the grasping gripper lets go (``release``);
+- **slide out**: E, when the cable between the last fixed point and the
+  gripper is too short for the next entry;
+- **hand over**: H by the other gripper nearer the last fixed point, then
+  ``release`` of the holding one, when the gripper holds the cable so far
+  out that the next entry's motion leaves the reach or F could not press
+  the clip in.
+
+It checks every planned gripper point against the reach box, the height of
+each peg and clip (a cable can be caught on the peg; F or C can press the
+clip in: :class:`~tautwire.primitives.clip_sensing.PivotPress`), the slot's
+direction, and the cable's length (the route along the fixtures plus what
+each primitive needs beyond them must fit the cable). A route it cannot do
+raises :class:`RouteError`, one line naming the cable, the route entry and
+the reason.
+
+The planner works on plain data (:class:`RouteProblem`); it does not look
+at collisions with fixtures that are not on the route, nor between the two
+grippers.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.errors import TautwireError
+from tautwire.primitives.clip_sensing import PRESS_MARGIN, PivotPress, push_tension
+from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
+from tautwire.primitives.single_arm_clipping import (
+    ABOVE,
+    JAW_TOP,
+    MAX_ANGLE,
+    MAX_SLOT_ANGLE,
+    TABLE_CLEARANCE,
+)
+from tautwire.robot import Arm
+from tautwire.robot.workspace import Workspace
+
+FloatArray = NDArray[np.float64]
+Point = tuple[float, float, float]
+Side = Literal["left", "right"]
+ParamValue = bool | float | str | list[float]
+
+#: F is planned only where the slot is this much inside F's own limit
+#: (the contact it aims from is an estimate) [rad].
+SLOT_ANGLE = MAX_SLOT_ANGLE - math.radians(5.0)
+#: Least cable [m] a gripper keeps beyond the point it last routed.
+MIN_LEAD = 0.04
+#: Cable [m] beyond the needed point a slide (E) or a hand-over leaves.
+LEAD = 0.08
+#: Angle [rad] past the tangent by which a move presses the cable onto a peg.
+CATCH = math.radians(15.0)
+#: Largest turn [rad] about the last fixed point between two move waypoints.
+SWEEP_STEP = math.radians(30.0)
+#: Height [m] over a peg's top at which a lifted cable passes it.
+OVER_PEG = 0.02
+#: Cable length [m] between the two grippers of a parallel clip (H + C).
+SPAN = 0.12
+#: H grasps at least this far [m] from either end of the taut edge.
+GRASP_MARGIN = 0.04
+#: Wraps [rad] this small are left to the catch move (no I step).
+SMALL_TURN = math.radians(3.0)
+#: Decimals of the numbers in a plan (0.1 mm, 0.1 mrad).
+DIGITS = 4
+
+
+class RouteError(TautwireError):
+    """A route the robot cannot do.
+
+    Its string is one line: ``cable W1, route entry 2 (C1): reason``.
+
+    Attributes:
+        cable: the cable's name.
+        entry: 1-based index of the route entry (``None``: the cable as a whole).
+        fixture: the entry's fixture name (``None`` with ``entry``).
+        reason: what makes it impossible (and what would do).
+    """
+
+    def __init__(self, cable: str, entry: int | None, fixture: str | None, reason: str) -> None:
+        self.cable = cable
+        self.entry = entry
+        self.fixture = fixture
+        self.reason = reason
+        where = f"cable {cable}" if entry is None else f"cable {cable}, route entry {entry}"
+        if fixture is not None:
+            where += f" ({fixture})"
+        super().__init__(" ".join(f"{where}: {reason}".split()))
+
+
+@dataclass(frozen=True)
+class BoardFixture:
+    """A fixture of the board, as the planner sees it.
+
+    Attributes:
+        name: unique name.
+        kind: ``anchor``, ``peg`` or ``clip``.
+        position: anchor point, peg base centre or clip seat [m].
+        radius: a peg's radius [m].
+        height: a peg's height above ``position`` [m].
+        yaw: a clip's slot direction about z [rad].
+        push_force: the force that pushes a cable into a clip [N].
+        length: a clip's length along its slot [m].
+    """
+
+    name: str
+    kind: Literal["anchor", "peg", "clip"]
+    position: Point
+    radius: float = 0.0
+    height: float = 0.0
+    yaw: float = 0.0
+    push_force: float = 0.0
+    length: float = 0.0
+
+
+@dataclass(frozen=True)
+class RouteEntry:
+    """One fixture of a target route.
+
+    Attributes:
+        fixture: the peg or clip's name.
+        side: for a peg, the side of the cable it stays on, seen along the route.
+        wind: for a peg, full turns around it.
+    """
+
+    fixture: str
+    side: Side | None = None
+    wind: int = 0
+
+
+@dataclass(frozen=True)
+class CableToRoute:
+    """A cable, where it starts and is held, and its target route.
+
+    Attributes:
+        name: the cable's name.
+        length: rest length [m].
+        stiffness: axial stiffness of the whole cable [N/m].
+        radius: cable radius [m].
+        start: the anchor holding its first end (``None``: a free end).
+        via: fixtures it initially bears against, in order.
+        holds: ``(arm, arc length [m])`` of each gripper that holds it.
+        route: the target route (empty: the planner leaves the cable alone).
+    """
+
+    name: str
+    length: float
+    stiffness: float
+    radius: float
+    start: str | None
+    via: tuple[str, ...]
+    holds: tuple[tuple[Arm, float], ...]
+    route: tuple[RouteEntry, ...]
+
+
+@dataclass(frozen=True)
+class RobotLayout:
+    """The robot as the planner sees it.
+
+    Attributes:
+        grippers: start position of each tool centre point [m].
+        sensors: the arms that carry a force-torque sensor.
+        reach: the box every planned tool centre point must lie in.
+        force_limit: the run's force limit [N].
+    """
+
+    grippers: Mapping[Arm, Point]
+    sensors: frozenset[Arm]
+    reach: Workspace
+    force_limit: float
+
+
+@dataclass(frozen=True)
+class RouteProblem:
+    """Everything the planner needs.
+
+    Attributes:
+        fixtures: the board.
+        cables: every cable on it (those without a route are left alone).
+        robot: grippers, sensors, reach and force limit.
+        tension: the tension [N] D keeps while routing.
+        friction_force: the tension [N] kept while the cable slides out (E).
+    """
+
+    fixtures: tuple[BoardFixture, ...]
+    cables: tuple[CableToRoute, ...]
+    robot: RobotLayout
+    tension: float = 3.0
+    friction_force: float = 1.5
+
+
+@dataclass(frozen=True)
+class PlannedStep:
+    """One step of the plan: a primitive or a move with its parameters.
+
+    Attributes:
+        primitive: canonical name (``single_arm_tension``, ``move``, ...).
+        params: parameters by name, ``cable`` included (SI units).
+        why: what the step is for, in words.
+    """
+
+    primitive: str
+    params: Mapping[str, ParamValue]
+    why: str
+
+    def as_task_step(self) -> dict[str, ParamValue]:
+        """The step as a scenario's ``task:`` entry (flat)."""
+        return {"primitive": self.primitive, **self.params}
+
+
+@dataclass(frozen=True)
+class CablePlan:
+    """What the plan does with one cable.
+
+    Attributes:
+        name: the cable's name.
+        steps: indices of its steps in :attr:`Plan.steps`.
+        route_length: cable [m] from the start to the last routed point
+            (along the fixtures, windings and slack before a parallel clip included).
+        held_at: arc length [m] at which a gripper holds it at the end.
+        arm: the gripper that holds it at the end.
+    """
+
+    name: str
+    steps: tuple[int, ...]
+    route_length: float
+    held_at: float
+    arm: Arm
+
+
+@dataclass(frozen=True)
+class Plan:
+    """The planned task.
+
+    Attributes:
+        steps: in order.
+        cables: one entry per routed cable.
+    """
+
+    steps: tuple[PlannedStep, ...]
+    cables: tuple[CablePlan, ...]
+
+    def task(self) -> list[dict[str, ParamValue]]:
+        """The steps as a scenario's ``task:`` list."""
+        return [step.as_task_step() for step in self.steps]
+
+
+def plan_routes(problem: RouteProblem) -> Plan:
+    """Plan every cable's route, cable after cable, in the problem's order.
+
+    Raises:
+        RouteError: for the first route entry the robot cannot do.
+    """
+    return _Planner(problem).plan()
+
+
+# ------------------------------------------------------------------ geometry
+
+
+def _vec(p: Point | FloatArray) -> FloatArray:
+    return np.array([float(c) for c in p], dtype=float)
+
+
+def _flat(v: FloatArray) -> FloatArray:
+    return np.array([v[0], v[1], 0.0])
+
+
+def _unit(v: FloatArray) -> FloatArray:
+    n = float(np.linalg.norm(v))
+    return v / n if n > 1e-12 else np.zeros(3)
+
+
+def _turn(v: FloatArray, angle: float) -> FloatArray:
+    """``v`` turned by ``angle`` [rad] about +z."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([c * v[0] - s * v[1], s * v[0] + c * v[1], v[2]])
+
+
+def _heading(v: FloatArray) -> float:
+    return math.atan2(float(v[1]), float(v[0]))
+
+
+def _swept(start: FloatArray, end: FloatArray, sign: float) -> float:
+    """Angle [rad, 0..2 pi) from horizontal ``start`` to ``end``, turning the ``sign`` way."""
+    return (sign * (_heading(end) - _heading(start))) % (2.0 * math.pi)
+
+
+def _cross_z(a: FloatArray, b: FloatArray) -> float:
+    return float(a[0] * b[1] - a[1] * b[0])
+
+
+def _tangent_from(point: FloatArray, centre: FloatArray, rho: float, sign: float) -> FloatArray:
+    """Horizontal unit direction from ``point`` that grazes the circle (centre, rho).
+
+    ``sign`` +1: the circle stays on the direction's left; -1: on its right.
+    """
+    rel = _flat(centre - point)
+    d = float(np.linalg.norm(rel))
+    beta = math.asin(min(1.0, rho / d))
+    return _turn(rel / d, -sign * beta)
+
+
+def _tangent_to(point: FloatArray, centre: FloatArray, rho: float, sign: float) -> FloatArray:
+    """Horizontal unit direction from the circle towards ``point``, leaving it tangentially.
+
+    ``sign`` +1: the circle stays on the direction's left (the cable turned
+    counter-clockwise round it); -1: on its right.
+    """
+    rel = _flat(centre - point)
+    d = float(np.linalg.norm(rel))
+    beta = math.asin(min(1.0, rho / d))
+    return -_turn(rel / d, sign * beta)
+
+
+def _fmt(p: FloatArray) -> str:
+    return "[" + ", ".join(f"{float(c):.3f}" for c in p) + "]"
+
+
+def _round(v: float) -> float:
+    return round(float(v), DIGITS) + 0.0
+
+
+# ------------------------------------------------------------------ planner
+
+
+@dataclass
+class _Cable:
+    """The planner's running state of the cable being routed."""
+
+    spec: CableToRoute
+    arm: Arm
+    at: float  # the held arc length [m]
+    gripper: FloatArray  # the planned tool centre point [m]
+    contact: FloatArray  # the last fixed point the cable leaves [m]
+    s_contact: float  # its arc length [m]
+    entry: int | None = None  # 1-based route entry being planned
+    fixture: str | None = None
+    steps: list[int] = field(default_factory=list)
+
+    @property
+    def free(self) -> float:
+        """Cable [m] between the last fixed point and the gripper."""
+        return self.at - self.s_contact
+
+
+class _Planner:
+    def __init__(self, problem: RouteProblem) -> None:
+        self.problem = problem
+        self.robot = problem.robot
+        self.fixtures = {f.name: f for f in problem.fixtures}
+        self.steps: list[PlannedStep] = []
+        self.cables: list[CablePlan] = []
+        self.holder: dict[Arm, str | None] = {"left": None, "right": None}
+        for cable in problem.cables:
+            for arm, _ in cable.holds:
+                self.holder[arm] = cable.name
+        self.done: dict[str, bool] = {}  # routed cable -> whether a clip holds its end
+        self.clips_used: dict[str, str] = {}
+
+    # -- helpers
+
+    def fail(self, cable: _Cable, reason: str) -> RouteError:
+        return RouteError(cable.spec.name, cable.entry, cable.fixture, reason)
+
+    def emit(self, cable: _Cable, primitive: str, why: str, **params: ParamValue) -> None:
+        values: dict[str, ParamValue] = {}
+        for key, value in params.items():
+            if isinstance(value, float):
+                value = _round(value)
+            elif isinstance(value, list):
+                value = [_round(c) for c in value]
+            values[key] = value
+        values["cable"] = cable.spec.name
+        cable.steps.append(len(self.steps))
+        self.steps.append(PlannedStep(primitive, values, why))
+
+    def check_reach(self, cable: _Cable, point: FloatArray, what: str) -> None:
+        if not self.robot.reach.contains([float(c) for c in point]):
+            raise self.fail(
+                cable,
+                f"{what} takes the gripper to {_fmt(point)}, out of reach "
+                f"(expected {self.robot.reach.describe()})",
+            )
+
+    def other_arm_free(self, cable: _Cable) -> Arm | None:
+        """The other gripper, released from a finished clipped cable if need be; or None."""
+        other: Arm = "right" if cable.arm == "left" else "left"
+        held = self.holder[other]
+        if held is None:
+            return other
+        if self.done.get(held):
+            self.holder[other] = None
+            self.steps.append(
+                PlannedStep(
+                    "release",
+                    {"arm": other, "cable": held},
+                    f"free the {other} gripper: {held} is routed and its last clip holds it",
+                )
+            )
+            cable.steps.append(len(self.steps) - 1)
+            return other
+        return None
+
+    def why_other_busy(self, cable: _Cable) -> str:
+        other: Arm = "right" if cable.arm == "left" else "left"
+        held = self.holder[other]
+        if held is None:
+            return f"the {other} gripper has no force sensor"
+        if held in self.done:
+            return f"the {other} gripper holds {held}, whose route does not end in a clip"
+        return f"the {other} gripper holds {held}"
+
+    # -- the plan
+
+    def plan(self) -> Plan:
+        for spec in self.problem.cables:
+            if spec.route:
+                self.plan_cable(spec)
+        return Plan(tuple(self.steps), tuple(self.cables))
+
+    def plan_cable(self, spec: CableToRoute) -> None:
+        probe = _Cable(spec, "left", 0.0, np.zeros(3), np.zeros(3), 0.0)
+        start = None if spec.start is None else self.fixtures.get(spec.start)
+        if start is None or start.kind != "anchor":
+            raise self.fail(
+                probe,
+                "has no start anchor (expected start: an anchor; D tensions the cable against it)",
+            )
+        if len(spec.holds) != 1:
+            raise self.fail(
+                probe,
+                "is held by both grippers (expected one hold: the planner routes with the "
+                "gripper that holds the cable and keeps the other free)",
+            )
+        arm, at = spec.holds[0]
+        if arm not in self.robot.sensors:
+            raise self.fail(
+                probe,
+                f"is held by the {arm} gripper, which has no force sensor (expected the "
+                "holding gripper to sense: sensor.arm both or " + arm + ")",
+            )
+        anchor = _vec(start.position)
+        cable = _Cable(spec, arm, at, _vec(self.robot.grippers[arm]), anchor, 0.0)
+        # the cable starts through its via fixtures: the route must begin with them
+        entries = list(enumerate(spec.route, start=1))
+        for k, name in enumerate(spec.via):
+            if k >= len(entries) or entries[k][1].fixture != name:
+                raise self.fail(
+                    cable,
+                    f"starts through {name} (via) but its route does not begin with "
+                    f"{', '.join(spec.via)} (expected the via fixtures first, in order)",
+                )
+        for k, entry in entries:
+            cable.entry, cable.fixture = k, entry.fixture
+            fixture = self.fixtures.get(entry.fixture)
+            if fixture is None or fixture.kind == "anchor":
+                what = "an anchor" if fixture is not None else "not a fixture of the board"
+                routable = [f.name for f in self.problem.fixtures if f.kind != "anchor"]
+                raise self.fail(
+                    cable,
+                    f"{entry.fixture} is {what} (expected a peg or clip: "
+                    f"{', '.join(routable) or 'none'})",
+                )
+            if fixture.kind == "peg" and entry.side is None:
+                raise self.fail(cable, "a peg needs a side (expected left or right)")
+            if fixture.kind == "clip" and fixture.name in self.clips_used:
+                raise self.fail(
+                    cable, f"clip {fixture.name} already holds {self.clips_used[fixture.name]}"
+                )
+        cable.entry, cable.fixture = None, None
+        laid = len(spec.via)
+        for k, entry in entries[:laid]:  # laid by the initial routing: follow the geometry
+            cable.entry, cable.fixture = k, entry.fixture
+            self.follow_laid(cable, entry, entries[k][1] if k < len(entries) else None)
+        cable.entry, cable.fixture = None, None
+        gap = float(np.linalg.norm(cable.gripper - cable.contact))
+        if gap > cable.free + 1e-6:
+            raise self.fail(
+                cable,
+                f"{cable.free:.3f} m of cable cannot span the {gap:.3f} m from its last fixed "
+                f"point {_fmt(cable.contact)} to the {cable.arm} gripper (expected the gripper "
+                "within the cable's reach)",
+            )
+        # D: tension against the last fixed point
+        taut = cable.contact + cable.free * _unit(cable.gripper - cable.contact)
+        self.check_reach(cable, taut, "tensioning")
+        cable.gripper = taut
+        self.emit(
+            cable,
+            "single_arm_tension",
+            "pull the cable taut",
+            arm=cable.arm,
+            force=self.problem.tension,
+        )
+        for k, entry in entries[laid:]:
+            cable.entry, cable.fixture = k, entry.fixture
+            following = entries[k][1] if k < len(entries) else None
+            fixture = self.fixtures[entry.fixture]
+            if fixture.kind == "peg":
+                self.plan_peg(cable, entry, fixture, following)
+            else:
+                self.plan_clip(cable, fixture)
+        self.done[spec.name] = self.fixtures[spec.route[-1].fixture].kind == "clip"
+        self.holder[cable.arm] = spec.name
+        self.cables.append(
+            CablePlan(spec.name, tuple(cable.steps), cable.s_contact, cable.at, cable.arm)
+        )
+
+    def next_point(self, entry: RouteEntry | None) -> FloatArray | None:
+        """Where the cable heads for after a peg: the next fixture's seat or axis [m]."""
+        if entry is None:
+            return None
+        fixture = self.fixtures.get(entry.fixture)
+        return None if fixture is None else _vec(fixture.position)
+
+    # -- pegs
+
+    def wrap(
+        self, cable: _Cable, peg: BoardFixture, entry: RouteEntry, following: RouteEntry | None
+    ) -> tuple[FloatArray, FloatArray, float, float]:
+        """The taut wrap of ``peg``: (u_in, tangent point T1, the turn [rad], rho [m])."""
+        sign = 1.0 if entry.side == "left" else -1.0
+        rho = peg.radius + cable.spec.radius
+        centre = _vec(peg.position)
+        c = cable.contact
+        d = float(np.linalg.norm(_flat(centre - c)))
+        if d <= rho + 1e-3:
+            raise self.fail(cable, "the peg stands at the cable's last fixed point")
+        u_in = _tangent_from(c, centre, rho, sign)
+        t1 = c + u_in * math.sqrt(max(d * d - rho * rho, 0.0))
+        t1[2] = c[2]
+        target = self.next_point(following)
+        if target is None or float(np.linalg.norm(_flat(target - centre))) <= rho + 1e-3:
+            turn = CATCH
+        else:
+            u_out = _tangent_to(target, centre, rho, sign)
+            turn = _swept(u_in, u_out, sign)
+        return u_in, t1, turn + 2.0 * math.pi * entry.wind, rho
+
+    def follow_laid(self, cable: _Cable, entry: RouteEntry, following: RouteEntry | None) -> None:
+        """Advance along a fixture the initial routing already lays the cable through."""
+        fixture = self.fixtures[entry.fixture]
+        if fixture.kind == "clip":
+            self.advance_clip(cable, fixture)
+            return
+        if entry.wind:
+            raise self.fail(cable, "the initial routing (via) lays no windings")
+        sign = 1.0 if entry.side == "left" else -1.0
+        centre = _vec(fixture.position)
+        after = self.next_point(following)
+        if after is None:
+            after = cable.gripper
+        bend = _cross_z(_flat(centre - cable.contact), _flat(after - centre))
+        if bend * sign < 0.0:  # a left peg turns the cable left: cross > 0
+            raise self.fail(
+                cable,
+                f"the initial routing (via) bends the cable round the peg's other side "
+                f"(expected the peg on the {'right' if sign > 0 else 'left'})",
+            )
+        self.advance_peg(cable, fixture, entry, following)
+
+    def advance_peg(
+        self, cable: _Cable, peg: BoardFixture, entry: RouteEntry, following: RouteEntry | None
+    ) -> float:
+        """Move the last fixed point past the wrapped peg; return the cable it used [m]."""
+        sign = 1.0 if entry.side == "left" else -1.0
+        u_in, t1, turn, rho = self.wrap(cable, peg, entry, following)
+        centre = _vec(peg.position)
+        centre[2] = t1[2]
+        used = float(np.linalg.norm(t1 - cable.contact)) + rho * turn
+        normal = _turn(u_in, sign * math.pi / 2.0)  # from the tangent point towards the axis
+        t2 = centre + _turn(-normal * rho, sign * turn)
+        cable.contact, cable.s_contact = t2, cable.s_contact + used
+        return used
+
+    def plan_peg(
+        self, cable: _Cable, entry: RouteEntry, peg: BoardFixture, following: RouteEntry | None
+    ) -> None:
+        sign = 1.0 if entry.side == "left" else -1.0
+        u_in, t1, turn, rho = self.wrap(cable, peg, entry, following)
+        to_peg = float(np.linalg.norm(_flat(t1 - cable.contact)))
+        need = to_peg + rho * turn + MIN_LEAD
+        self.ensure_free(cable, need, "to pass the peg")
+        # the height at which the cable passes the peg, and the gripper's height for it
+        base, top = peg.position[2], peg.position[2] + peg.height
+        lo, hi = base + cable.spec.radius + 0.003, top - cable.spec.radius - 0.003
+        if lo > hi:
+            raise self.fail(
+                cable, f"the peg is {peg.height:.3f} m high, too low to catch the cable"
+            )
+        c = cable.contact
+        z_pass = min(max(float(c[2]), lo), hi)
+        reach = cable.free - rho * CATCH  # from the last fixed point to the gripper, caught
+        z_grip = float(c[2]) + (z_pass - float(c[2])) * reach / max(to_peg, 1e-6)
+        if z_grip < TABLE_CLEARANCE:
+            raise self.fail(
+                cable,
+                f"the cable from {_fmt(c)} can pass the peg only below z = {hi:.3f} m, and "
+                f"the gripper would go down to z = {z_grip:.3f} m (expected at least "
+                f"{TABLE_CLEARANCE:g} m above the board)",
+            )
+        u_catch = _turn(u_in, sign * CATCH)
+        horizontal = math.sqrt(max(reach * reach - (z_grip - float(c[2])) ** 2, 1e-6))
+        catch = c + u_catch * horizontal
+        catch[2] = z_grip
+        # sweep onto the peg from the side the route asks for, lifting over it if needed
+        u_now = _unit(_flat(cable.gripper - c))
+        u_peg = _unit(_flat(_vec(peg.position) - c))
+        peg_side = _cross_z(u_now, u_peg) * sign  # > 0: the peg lies on the wanted side
+        moves: list[tuple[FloatArray, str]] = []
+        start = cable.gripper
+        if peg_side <= 0.0:  # the peg is on the other side: lift the cable over it
+            clear = top + OVER_PEG
+            z_lift = float(c[2]) + (clear - float(c[2])) * reach / max(to_peg, 1e-6)
+            lifted = cable.gripper.copy()
+            lifted[2] = max(z_lift, float(lifted[2]))
+            beside = c + _turn(u_in, -sign * CATCH) * horizontal  # clear of the peg
+            beside[2] = lifted[2]
+            moves.append((lifted, "lift the cable over the peg"))
+            moves += [
+                (p, "carry the cable over the peg") for p in self.arc(c, lifted, beside, -sign)
+            ]
+            start = beside.copy()
+            start[2] = z_grip
+            moves.append((start, "lower the cable beside the peg, on the route's side"))
+        moves += [(p, "sweep the cable onto the peg") for p in self.arc(c, start, catch, sign)]
+        for point, _ in moves:
+            self.check_reach(cable, point, "catching the peg")
+        for point, why in moves:
+            self.emit(cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True)
+        cable.gripper = catch
+        rest = turn - CATCH
+        if rest > SMALL_TURN:
+            radius = float(np.linalg.norm(_flat(catch - _vec(peg.position))))
+            centre = _vec(peg.position)
+            centre[2] = z_grip
+            start = _flat(catch - centre)
+            for k in range(1, 49):
+                angle = sign * min(rest, 2.0 * math.pi) * k / 48.0
+                self.check_reach(cable, centre + _turn(start, angle), "winding round the peg")
+            turns = (
+                f", {entry.wind} full turn{'s' if entry.wind != 1 else ''}" if entry.wind else ""
+            )
+            self.emit(
+                cable,
+                "rotate_around_feature_point",
+                f"wind the cable round the peg ({math.degrees(rest):.0f} deg{turns})",
+                arm=cable.arm,
+                angle=sign * rest,
+                axis=[0.0, 0.0, 1.0],
+                about=peg.name,
+            )
+            left = max(radius - rho * rest, MIN_LEAD)
+            cable.gripper = centre + _turn(_unit(start), sign * rest) * left
+        self.advance_peg(cable, peg, entry, following)
+
+    def arc(
+        self, c: FloatArray, start: FloatArray, end: FloatArray, sign: float
+    ) -> list[FloatArray]:
+        """Waypoints to ``end`` (included), turning the ``sign`` way about ``c`` from ``start``."""
+        a = _flat(start - c)
+        b = _flat(end - c)
+        swept = _swept(a, b, sign)
+        if swept > math.pi * 1.5:  # the short way round is the other way: go straight
+            return [end]
+        n = max(1, math.ceil(swept / SWEEP_STEP))
+        points: list[FloatArray] = []
+        ra, rb = float(np.linalg.norm(a)), float(np.linalg.norm(b))
+        for k in range(1, n + 1):
+            t = k / n
+            p = c + _turn(_unit(a), sign * swept * t) * ((1.0 - t) * ra + t * rb)
+            p[2] = (1.0 - t) * float(start[2]) + t * float(end[2])
+            points.append(p)
+        points[-1] = end.copy()
+        return points
+
+    # -- clips
+
+    def slot_line(self, cable: _Cable, clip: BoardFixture) -> tuple[FloatArray, FloatArray, float]:
+        """The slot's direction away from the last fixed point, its exit, and the slot's angle."""
+        slot = np.array([math.cos(clip.yaw), math.sin(clip.yaw), 0.0])
+        seat = _vec(clip.position)
+        along = _flat(seat - cable.contact)
+        if float(np.linalg.norm(along)) < 0.5 * clip.length + 0.01:
+            raise self.fail(cable, "the clip lies at the cable's last fixed point")
+        if float(along @ slot) < 0.0:
+            slot = -slot
+        angle = math.acos(min(1.0, float(_unit(along) @ slot)))
+        return slot, seat + 0.5 * clip.length * slot, angle
+
+    def advance_clip(self, cable: _Cable, clip: BoardFixture) -> None:
+        _, exit_point, _ = self.slot_line(cable, clip)
+        cable.s_contact += float(np.linalg.norm(exit_point - cable.contact))
+        cable.contact = exit_point
+        self.clips_used[clip.name] = cable.spec.name
+
+    def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
+        slot, exit_point, angle = self.slot_line(cable, clip)
+        seat = _vec(clip.position)
+        c = cable.contact
+        run = float(np.linalg.norm(_flat(seat - c)))
+        slope = math.atan2(float(c[2] - seat[2]), run)
+        if abs(slope) > MAX_ANGLE:
+            raise self.fail(
+                cable,
+                f"the cable would reach the clip at {math.degrees(slope):.0f} deg from its last "
+                f"fixed point at {_fmt(c)} (expected at most {math.degrees(MAX_ANGLE):.0f} deg)",
+            )
+        if angle <= SLOT_ANGLE:
+            self.plan_single_clip(cable, clip, exit_point)
+        else:
+            other = self.other_arm_free(cable)
+            if other is None:
+                raise self.fail(
+                    cable,
+                    f"the slot is {math.degrees(angle):.0f} deg across the cable's line from "
+                    f"{_fmt(c)} (F takes at most {math.degrees(SLOT_ANGLE):.0f} deg) and C needs "
+                    f"the other gripper, but {self.why_other_busy(cable)}",
+                )
+            self.plan_parallel_clip(cable, clip, slot, exit_point, other)
+        self.clips_used[clip.name] = cable.spec.name
+
+    def press_plan(
+        self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float
+    ) -> float:
+        """The largest press [N] F can make on ``clip`` with the gripper ``r`` [m] past its exit."""
+        c = cable.contact
+        exit_top = exit_point.copy()
+        exit_top[2] = clip.position[2] + JAW_TOP
+        far = c - exit_top
+        span = float(np.linalg.norm(far)) + r
+        k_span = cable.spec.stiffness * cable.spec.length / max(span, 1e-3)
+        plan = PivotPress(
+            radius=r,
+            tension=self.problem.tension,
+            stiffness=k_span,
+            drop=float(exit_top[2]) - TABLE_CLEARANCE,
+            sin_far=float(far[2]) / max(float(np.linalg.norm(far)), 1e-9),
+            sin_max=math.sin(MAX_ANGLE),
+        )
+        limit = self.robot.force_limit
+        wanted = push_tension(clip.push_force, self.problem.tension, limit)
+        return plan.press(plan.tension_for(clip.push_force, wanted, 0.6 * limit))
+
+    def plan_single_clip(self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray) -> None:
+        c = cable.contact
+        to_exit = float(np.linalg.norm(exit_point - c))
+        needed = PRESS_MARGIN * clip.push_force
+        if self.press_plan(cable, clip, exit_point, MIN_LEAD) < needed:
+            best = self.press_plan(cable, clip, exit_point, MIN_LEAD)
+            raise self.fail(
+                cable,
+                f"the seat at z = {clip.position[2]:.3f} m leaves too little height to press the "
+                f"cable in: bending it over the clip presses at most {best:.1f} N of the "
+                f"{needed:.1f} N needed (the gripper stays {TABLE_CLEARANCE:g} m above the board)",
+            )
+        self.ensure_free(cable, to_exit + MIN_LEAD, "to clip")
+        r = cable.free - to_exit
+        if self.press_plan(cable, clip, exit_point, r) < needed:
+            # held too far out: grasp nearer with the other gripper
+            r_ok = self.closest_press_radius(cable, clip, exit_point, r, needed)
+            self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip in")
+        seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
+        target = c + _unit(seat_over - c) * cable.free
+        if float(target[2]) < TABLE_CLEARANCE:
+            raise self.fail(
+                cable,
+                f"over the clip the cable from {_fmt(c)} takes the gripper down to z = "
+                f"{float(target[2]):.3f} m (expected at least {TABLE_CLEARANCE:g} m above the "
+                "board)",
+            )
+        waypoints = self.arc(c, cable.gripper, target, self.turn_sign(c, cable.gripper, target))
+        for point in waypoints:
+            self.check_reach(cable, point, "bringing the cable over the clip")
+        for point in waypoints:
+            self.emit(
+                cable,
+                "move",
+                "bring the cable over the clip, along its slot",
+                arm=cable.arm,
+                to=[float(v) for v in point],
+                taut=True,
+            )
+        cable.gripper = target
+        self.emit(cable, "gripper_alignment", "align the gripper with the cable", arm=cable.arm)
+        self.emit(
+            cable,
+            "single_arm_clipping",
+            "push the cable into the clip",
+            arm=cable.arm,
+            clip=clip.name,
+        )
+        cable.s_contact += to_exit
+        cable.contact = exit_point
+
+    def closest_press_radius(
+        self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float, needed: float
+    ) -> float:
+        """The largest gripper distance [m] past the exit, up to ``r``, where F presses enough."""
+        for radius in np.linspace(r, MIN_LEAD, 60):
+            if self.press_plan(cable, clip, exit_point, float(radius)) >= needed:
+                return float(radius)
+        return MIN_LEAD
+
+    @staticmethod
+    def turn_sign(c: FloatArray, start: FloatArray, end: FloatArray) -> float:
+        """The shorter way (+1 counter-clockwise) from ``start`` to ``end`` about ``c``."""
+        return 1.0 if _cross_z(_flat(start - c), _flat(end - c)) >= 0.0 else -1.0
+
+    def plan_parallel_clip(
+        self,
+        cable: _Cable,
+        clip: BoardFixture,
+        slot: FloatArray,
+        exit_point: FloatArray,
+        other: Arm,
+    ) -> None:
+        seat = _vec(clip.position)
+        c = cable.contact
+        near = seat - 0.5 * SPAN * slot  # where the grasping gripper ends, on the near side
+        far = seat + 0.5 * SPAN * slot
+        for point in (near, far):
+            self.check_reach(cable, point, "holding the cable over the clip for C")
+        drop = float(seat[2]) + JAW_TOP - PARALLEL_TABLE_CLEARANCE
+        bend = min(MAX_ANGLE, math.atan2(max(drop, 0.0), 0.5 * SPAN))
+        tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
+        press = 2.0 * tension * math.sin(bend)
+        if press < PRESS_MARGIN * clip.push_force:
+            raise self.fail(
+                cable,
+                f"the seat at z = {clip.position[2]:.3f} m leaves too little height for C to "
+                f"press the cable in: {press:.1f} N of the {PRESS_MARGIN * clip.push_force:.1f} "
+                "N needed",
+            )
+        to_near = float(np.linalg.norm(near - c))
+        self.ensure_free(cable, to_near + SPAN + GRASP_MARGIN, "for a parallel clip")
+        if other not in self.robot.sensors and cable.arm not in self.robot.sensors:
+            raise self.fail(cable, "C needs a force sensor on one of the grippers")
+        grasp = cable.at - SPAN
+        if grasp - cable.s_contact < GRASP_MARGIN:
+            raise self.fail(
+                cable, "too little cable between the last fixed point and the gripper to grasp"
+            )
+        self.emit(
+            cable, "grasp_tensioned", "grasp the cable with the other gripper", arm=other, at=grasp
+        )
+        self.emit(
+            cable,
+            "parallel_clipping",
+            "press the cable into the clip with both grippers",
+            clip=clip.name,
+        )
+        self.emit(
+            cable, "release", "let go with the gripper on the near side of the clip", arm=other
+        )
+        cable.gripper = far
+        cable.s_contact = grasp + 0.5 * SPAN + 0.5 * clip.length
+        cable.contact = exit_point
+        self.emit(
+            cable,
+            "single_arm_tension",
+            "keep the cable taut from the clip",
+            arm=cable.arm,
+            force=self.problem.tension,
+        )
+
+    # -- length: slide out and hand over
+
+    def ensure_free(self, cable: _Cable, need: float, what: str) -> None:
+        """Slide the cable out (E) until ``need`` [m] of it lies past the last fixed point."""
+        if cable.free >= need:
+            return
+        distance = need - cable.free + LEAD - MIN_LEAD
+        if cable.at + distance > cable.spec.length + 1e-9:
+            total = cable.s_contact + need
+            raise self.fail(
+                cable,
+                f"the cable is too short: {what} it needs {total:.3f} m of cable from its start "
+                f"(the route so far {cable.s_contact:.3f} m plus {need:.3f} m), it is "
+                f"{cable.spec.length:.3f} m long",
+            )
+        out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
+        self.check_reach(cable, out, "sliding the cable out")
+        self.emit(
+            cable,
+            "single_arm_sliding",
+            f"slide out cable {what}",
+            arm=cable.arm,
+            distance=distance,
+            friction_force=self.problem.friction_force,
+        )
+        self.emit(
+            cable,
+            "single_arm_tension",
+            "pull the cable taut again",
+            arm=cable.arm,
+            force=self.problem.tension,
+        )
+        cable.at += distance
+        cable.gripper = out
+
+    def hand_over(self, cable: _Cable, at: float, what: str) -> None:
+        """Hand the cable over: the other gripper grasps at ``at`` [m], the first lets go."""
+        other = self.other_arm_free(cable)
+        if other is None or other not in self.robot.sensors:
+            raise self.fail(
+                cable,
+                f"the gripper holds the cable {cable.free:.3f} m from its last fixed point, too "
+                f"far out {what}, and no hand-over is possible: {self.why_other_busy(cable)}",
+            )
+        at = max(at, cable.s_contact + GRASP_MARGIN)
+        if at > cable.at - GRASP_MARGIN:
+            return
+        grasp = cable.contact + _unit(cable.gripper - cable.contact) * (at - cable.s_contact)
+        self.emit(
+            cable,
+            "grasp_tensioned",
+            f"hand over: grasp nearer the last fixed point {what}",
+            arm=other,
+            at=at,
+        )
+        self.emit(cable, "release", "hand over: let go with the first gripper", arm=cable.arm)
+        self.holder[cable.arm] = None
+        cable.arm, cable.at, cable.gripper = other, at, grasp
+        self.holder[other] = cable.spec.name
+        self.emit(
+            cable,
+            "single_arm_tension",
+            "pull the cable taut with the new gripper",
+            arm=cable.arm,
+            force=self.problem.tension,
+        )

@@ -1,0 +1,343 @@
+"""The route planner on crafted routes: feasible ones, and each kind of infeasible one."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from tautwire.cli.main import main
+from tautwire.robot.workspace import WORKSPACE
+from tautwire.scenario import parse_scenario
+from tautwire.scenario.route_problem import plan_scenario, route_problem, task_yaml
+from tautwire.tasks.planner import (
+    BoardFixture,
+    CableToRoute,
+    Plan,
+    RobotLayout,
+    RouteEntry,
+    RouteError,
+    RouteProblem,
+    plan_routes,
+)
+
+ROBOT = RobotLayout(
+    grippers={"left": (0.30, 0.20, 0.10), "right": (0.30, -0.20, 0.10)},
+    sensors=frozenset({"left", "right"}),
+    reach=WORKSPACE,
+    force_limit=15.0,
+)
+
+BOARD = (
+    BoardFixture("A1", "anchor", (0.05, 0.20, 0.08)),
+    BoardFixture("A2", "anchor", (0.05, -0.20, 0.08)),
+    BoardFixture("P1", "peg", (0.20, 0.15, 0.05), radius=0.006, height=0.06),
+    BoardFixture("C1", "clip", (0.35, 0.10, 0.08), yaw=0.0, push_force=2.5, length=0.03),
+    BoardFixture("C2", "clip", (0.50, 0.10, 0.08), yaw=0.0, push_force=2.5, length=0.03),
+    BoardFixture("C3", "clip", (0.30, -0.20, 0.08), yaw=0.0, push_force=2.5, length=0.03),
+    BoardFixture("C4", "clip", (0.30, -0.20, 0.08), yaw=math.pi / 2, push_force=2.5, length=0.03),
+    BoardFixture("C5", "clip", (0.30, 0.20, 0.08), yaw=math.pi / 2, push_force=2.5, length=0.03),
+    BoardFixture("LOW", "clip", (0.30, 0.20, 0.006), yaw=0.0, push_force=2.5, length=0.03),
+    BoardFixture("EDGE", "peg", (0.74, 0.20, 0.05), radius=0.006, height=0.06),
+    BoardFixture("FAR", "peg", (0.60, -0.45, 0.05), radius=0.006, height=0.06),
+)
+
+
+def cable(name: str, route: list[RouteEntry], **changes: object) -> CableToRoute:
+    """A 0.7 m cable from A1 held by the left gripper 0.35 m along it (or as ``changes`` say)."""
+    base = CableToRoute(
+        name=name,
+        length=0.70,
+        stiffness=200.0,
+        radius=0.0025,
+        start="A1",
+        via=(),
+        holds=(("left", 0.35),),
+        route=tuple(route),
+    )
+    return replace(base, **changes)  # type: ignore[arg-type]
+
+
+W1 = cable(
+    "W1",
+    [RouteEntry("P1", "left", 1), RouteEntry("C1"), RouteEntry("C2")],
+)
+W2 = cable("W2", [RouteEntry("C3")], start="A2", holds=(("right", 0.35),), length=0.6)
+
+
+def plan(*cables: CableToRoute, robot: RobotLayout = ROBOT) -> Plan:
+    return plan_routes(RouteProblem(BOARD, cables, robot))
+
+
+def names(p: Plan) -> list[str]:
+    return [s.primitive for s in p.steps]
+
+
+def test_anchor_peg_winding_clip_clip() -> None:
+    p = plan(W1)
+    steps = names(p)
+    assert steps[0] == "single_arm_tension"
+    assert steps.count("rotate_around_feature_point") == 1
+    clips = [s.params["clip"] for s in p.steps if s.primitive == "single_arm_clipping"]
+    assert clips == ["C1", "C2"]
+    # the winding comes before the clips, G right before each F
+    assert steps.index("rotate_around_feature_point") < steps.index("single_arm_clipping")
+    for i, s in enumerate(steps):
+        if s == "single_arm_clipping":
+            assert steps[i - 1] == "gripper_alignment"
+    turn = next(s for s in p.steps if s.primitive == "rotate_around_feature_point")
+    angle = turn.params["angle"]
+    assert isinstance(angle, float)
+    # one full turn plus the wrap towards C1, counter-clockwise (the peg on the left)
+    assert 2.0 * math.pi - 0.5 < angle < 2.0 * math.pi + 0.5
+    assert turn.params["about"] == "P1"
+    assert all(s.params["cable"] == "W1" for s in p.steps)
+    assert all(s.params.get("arm", "left") == "left" for s in p.steps)
+    for s in p.steps:
+        if s.primitive == "move":
+            to = s.params["to"]
+            assert isinstance(to, list) and WORKSPACE.contains(to)
+    (w1,) = p.cables
+    # the cable used: at least the straight line anchor -> P1 -> C1 -> C2 plus one turn
+    rho = 0.006 + 0.0025
+    straight = math.dist((0.05, 0.20), (0.20, 0.15)) + math.dist((0.20, 0.15), (0.35, 0.10))
+    straight += math.dist((0.35, 0.10), (0.50, 0.10))
+    assert w1.route_length > straight + 2.0 * math.pi * rho - 0.02
+    assert w1.route_length < W1.length
+    assert w1.held_at <= W1.length
+
+
+def test_a_peg_on_the_wrong_side_is_passed_over() -> None:
+    # P1 lies right of the line from A1 to the left gripper: keeping it on the
+    # cable's left lifts the cable over it first
+    lifted = plan(cable("W1", [RouteEntry("P1", "left")]))
+    moves = [s for s in lifted.steps if s.primitive == "move"]
+    heights = [s.params["to"][2] for s in moves]  # type: ignore[index]
+    assert max(heights) > 0.05 + 0.06  # over the peg's top
+    kept = plan(cable("W1", [RouteEntry("P1", "right")]))
+    assert all(s.params["to"][2] < 0.11 for s in kept.steps if s.primitive == "move")  # type: ignore[index]
+
+
+def mirrored(f: BoardFixture) -> BoardFixture:
+    x, y, z = f.position
+    return replace(f, position=(x, -y, z), yaw=-f.yaw)
+
+
+@settings(max_examples=10, deadline=None)
+@given(wind=st.integers(0, 2), side=st.sampled_from(["left", "right"]))
+def test_mirrored_board_mirrors_the_plan(wind: int, side: str) -> None:
+    """Mirroring the board in y swaps the peg's side and negates every turn."""
+    other = "right" if side == "left" else "left"
+    route = [RouteEntry("P1", side, wind), RouteEntry("C1")]  # type: ignore[arg-type]
+    mirror_route = [RouteEntry("P1", other, wind), RouteEntry("C1")]  # type: ignore[arg-type]
+    a = plan_routes(RouteProblem(BOARD, (cable("W", route),), ROBOT))
+    # ROBOT's grippers are mirror images: the right one takes the left one's part
+    b = plan_routes(
+        RouteProblem(
+            tuple(mirrored(f) for f in BOARD),
+            (cable("W", mirror_route, holds=(("right", 0.35),)),),
+            ROBOT,
+        )
+    )
+    assert names(a) == names(b)
+    for sa, sb in zip(a.steps, b.steps, strict=True):
+        if sa.primitive == "rotate_around_feature_point":
+            assert sb.params["angle"] == pytest.approx(-sa.params["angle"], abs=2e-3)  # type: ignore[operator]
+        if sa.primitive == "move":
+            xa, ya, za = sa.params["to"]  # type: ignore[misc]
+            assert sb.params["to"] == pytest.approx([xa, -ya, za], abs=2e-3)
+
+
+def test_two_cables_each_with_its_arm() -> None:
+    p = plan(W1, W2)
+    assert [c.name for c in p.cables] == ["W1", "W2"]
+    first, second = p.cables
+    assert max(first.steps) < min(second.steps)
+    for i in second.steps:
+        step = p.steps[i]
+        assert step.params["cable"] == "W2"
+        assert step.params.get("arm", "right") == "right"
+    assert [s.params["clip"] for s in p.steps if "clip" in s.params] == ["C1", "C2", "C3"]
+
+
+def test_clip_across_the_cable_is_pressed_in_with_both_grippers() -> None:
+    # C5's slot runs across the line from A1: F cannot, so H + C + release
+    p = plan(cable("W1", [RouteEntry("C5")], holds=(("left", 0.45),)))
+    steps = names(p)
+    h = steps.index("grasp_tensioned")
+    assert steps[h : h + 3] == ["grasp_tensioned", "parallel_clipping", "release"]
+    assert p.steps[h].params["arm"] == "right"
+    assert p.steps[h + 2].params["arm"] == "right"  # the near-side gripper lets go
+    assert "single_arm_clipping" not in steps
+
+
+def test_a_gripper_holding_far_out_hands_the_cable_over() -> None:
+    # held 0.6 m along: the left gripper would be too far beyond C3 to press it in
+    far = cable("W1", [RouteEntry("C3")], start="A2", holds=(("left", 0.62),), length=0.7)
+    robot = replace(ROBOT, grippers={"left": (0.30, -0.05, 0.10), "right": (0.30, 0.25, 0.10)})
+    p = plan(far, robot=robot)
+    steps = names(p)
+    assert steps[steps.index("grasp_tensioned") + 1] == "release"
+    f = next(s for s in p.steps if s.primitive == "single_arm_clipping")
+    assert f.params["arm"] == "right"
+
+
+def test_too_short_a_hold_slides_cable_out() -> None:
+    short = cable("W1", [RouteEntry("C2")], holds=(("left", 0.30),), start="A1")
+    board_c2 = replace(BOARD[4], position=(0.50, 0.20, 0.08))
+    p = plan_routes(RouteProblem((BOARD[0], board_c2), (short,), ROBOT))
+    steps = names(p)
+    assert "single_arm_sliding" in steps
+    assert steps.index("single_arm_sliding") < steps.index("single_arm_clipping")
+    assert p.cables[0].held_at > 0.30
+
+
+# ------------------------------------------------------------------ infeasible
+
+
+def error_of(*cables: CableToRoute, robot: RobotLayout = ROBOT) -> RouteError:
+    with pytest.raises(RouteError) as info:
+        plan(*cables, robot=robot)
+    text = str(info.value)
+    assert "\n" not in text
+    return info.value
+
+
+def test_out_of_reach() -> None:
+    # winding the peg at the board's far edge takes the gripper past x = 0.8 m
+    err = error_of(cable("W1", [RouteEntry("C1"), RouteEntry("EDGE", "left", 1)], length=0.9))
+    assert (err.cable, err.entry, err.fixture) == ("W1", 2, "EDGE")
+    assert "out of reach" in err.reason
+
+
+def test_clip_too_low_to_press_in() -> None:
+    err = error_of(cable("W1", [RouteEntry("LOW")]))
+    assert (err.entry, err.fixture) == (1, "LOW")
+    assert "too little height" in err.reason
+
+
+def test_clip_across_the_cable_with_the_other_gripper_busy() -> None:
+    across = cable("W1", [RouteEntry("C5")])
+    err = error_of(across, replace(W2, route=()))
+    assert (err.entry, err.fixture) == (1, "C5")
+    assert "deg across" in err.reason and "holds W2" in err.reason
+
+
+def test_cable_too_short() -> None:
+    err = error_of(replace(W1, length=0.36))
+    assert err.cable == "W1" and err.entry is not None
+    assert "too short" in err.reason and "0.360 m long" in err.reason
+
+
+def test_unknown_fixture() -> None:
+    err = error_of(cable("W1", [RouteEntry("C1"), RouteEntry("P9", "left")]))
+    assert (err.entry, err.fixture) == (2, "P9")
+    assert "not a fixture" in err.reason
+    assert str(err).startswith("cable W1, route entry 2 (P9): ")
+
+
+def test_gripper_beyond_the_cable() -> None:
+    err = error_of(cable("W1", [RouteEntry("C1")], start="A2"))
+    assert err.entry is None and "cannot span" in err.reason
+
+
+def test_anchor_in_a_route_and_cable_without_anchor_or_sensor() -> None:
+    assert "an anchor" in error_of(cable("W1", [RouteEntry("A2")])).reason
+    assert "no start anchor" in error_of(cable("W1", [RouteEntry("C1")], start=None)).reason
+    one = replace(ROBOT, sensors=frozenset({"right"}))
+    assert "no force sensor" in error_of(W1, robot=one).reason
+
+
+# ------------------------------------------------------------------ scenario and CLI
+
+SCENARIO = """\
+version: 1
+name: routed
+seed: 1
+robot:
+  sensor: {arm: both}
+  grippers:
+    left:  {position: [0.30, 0.20, 0.10]}
+    right: {position: [0.30, -0.20, 0.10]}
+board:
+  fixtures:
+    - {name: A1, type: anchor, position: [0.05, 0.20, 0.08]}
+    - {name: A2, type: anchor, position: [0.05, -0.20, 0.08]}
+    - {name: P1, type: peg, position: [0.20, 0.15, 0.05], radius: 0.006, height: 0.06}
+    - {name: C1, type: clip, position: [0.35, 0.10, 0.08], yaw: 0.0}
+    - {name: C2, type: clip, position: [0.50, 0.10, 0.08], yaw: 0.0}
+    - {name: C3, type: clip, position: [0.30, -0.20, 0.08], yaw: 0.0}
+cables:
+  - name: W1
+    length: 0.70
+    mass_per_length: 0.03
+    stiffness: 200.0
+    radius: 0.0025
+    start: A1
+    held_by: {arm: left, at: 0.35}
+    route:
+      - {fixture: P1, side: left, wind: 1}
+      - {fixture: C1}
+      - {fixture: C2}
+  - name: W2
+    length: 0.60
+    mass_per_length: 0.03
+    stiffness: 200.0
+    radius: 0.0025
+    start: A2
+    held_by: {arm: right, at: 0.35}
+    route:
+      - {fixture: C3}
+"""
+
+
+def test_scenario_plan_matches_the_plain_data_plan() -> None:
+    scenario = parse_scenario(SCENARIO)
+    problem = route_problem(scenario)
+    assert problem.cables[0].route == W1.route
+    assert names(plan_scenario(scenario)) == names(plan(W1, W2))
+
+
+def test_printed_task_validates_when_pasted_into_the_scenario() -> None:
+    scenario = parse_scenario(SCENARIO)
+    planned = plan_scenario(scenario)
+    pasted = parse_scenario(SCENARIO + task_yaml(planned))
+    assert [s.primitive for s in pasted.task] == names(planned)
+    assert [s.params for s in pasted.task] == [dict(s.params) for s in planned.steps]
+
+
+def test_plan_command_prints_a_task(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    path = tmp_path / "routed.yaml"
+    path.write_text(SCENARIO)
+    assert main(["plan", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("task:\n")
+    task = yaml.safe_load(out)["task"]
+    assert task[0] == {
+        "primitive": "single_arm_tension",
+        "arm": "left",
+        "force": 3.0,
+        "cable": "W1",
+    }
+    assert main(["plan", str(path), "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["task"] == task
+    assert [c["name"] for c in data["cables"]] == ["W1", "W2"]
+
+
+def test_plan_command_names_an_impossible_route(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "short.yaml"
+    path.write_text(SCENARIO.replace("length: 0.70", "length: 0.36"))
+    assert main(["plan", str(path)]) == 1
+    captured = capsys.readouterr()
+    assert captured.out == ""
+    (line,) = captured.err.strip().splitlines()
+    assert "cable W1, route entry" in line and "too short" in line
