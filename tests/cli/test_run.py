@@ -1,6 +1,7 @@
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from tautwire.cli.main import main
@@ -100,5 +101,65 @@ def test_run_video_without_rendering_says_so_and_exits_as_the_run(
     result = json.loads(captured.out)
     assert status == 0 and result["success"] is True
     assert "no video" in captured.err and "MUJOCO_GL=test" in captured.err
-    assert set(result["files"]) == {"result"} and (out / "result.json").is_file()
-    assert not (out / "run.gif").exists()
+    assert set(result["files"]) == {"result", "force_log", "plot", "model_views"}
+    assert (out / "result.json").is_file() and not (out / "run.gif").exists()
+
+
+TENSION_ROTATE = """\
+version: 1
+name: tension-rotate
+seed: 1
+robot:
+  force_limit: 15.0
+  sensor: {arm: left, noise_force: 0.05, noise_torque: 0.002}
+  grippers:
+    left: {position: [0.30, 0.32, 0.10], orientation: [0.7071068, 0, 0, 0.7071068]}
+    right: {position: [0.60, -0.45, 0.35]}
+board:
+  fixtures:
+    - {name: A1, type: anchor, position: [0.30, 0.0, 0.08]}
+cables:
+  - {name: W1, length: 0.40, mass_per_length: 0.03, stiffness: 200.0, radius: 0.0025,
+     start: A1, held_by: {arm: left, at: 0.40}}
+task:
+  - {primitive: D, arm: left, force: 2.5}
+  - {primitive: I, arm: left, angle: 1.2, speed: 0.5, about: A1}
+"""
+
+
+@pytest.mark.slow
+def test_run_out_writes_a_force_log_that_estimate_reads_and_the_plots(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from tautwire.estimation.force_log import read_force_log
+
+    scenario = tmp_path / "tension-rotate.yaml"
+    scenario.write_text(TENSION_ROTATE)
+    out = tmp_path / "out"
+    assert main(["run", str(scenario), "--out", str(out), "--json"]) == 0
+    files = json.loads(capsys.readouterr().out)["files"]
+    for name in ("run.png", "model_views.png"):
+        assert (out / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert Path(files["force_log"]) == out / "force_log.csv"
+    log = read_force_log(out / "force_log.csv")
+    assert log.torque is not None and log.q_gripper is not None
+    assert np.all(np.diff(log.t) == pytest.approx(0.04))  # one row per filter period
+    # rows are 10-sample means: the noise is the sensor's over sqrt(10)
+    status = main(
+        [
+            "estimate",
+            str(out / "force_log.csv"),
+            "--json",
+            "--mass-per-length",
+            "0.03",
+            "--force-noise",
+            "0.016",
+            "--torque-noise",
+            "0.0006",
+        ]
+    )
+    estimate = json.loads(capsys.readouterr().out)
+    assert status == 0 and len(estimate["history"]) == len(log)
+    # offline, from the log alone, the anchor the run circled (the truth: A1)
+    error = np.linalg.norm(np.array(estimate["contact"]) - [0.30, 0.0, 0.08])
+    assert error < 0.005

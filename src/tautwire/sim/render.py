@@ -29,6 +29,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError, SimulationError
+from tautwire.sim.model_overlay import (
+    ModelShapes,
+    draw_shapes,
+    fixture_colours,
+    fixture_labels,
+    style_scene,
+)
 from tautwire.sim.world import SimWorld
 
 UInt8Array = NDArray[np.uint8]
@@ -37,6 +44,8 @@ FloatArray = NDArray[np.float64]
 #: View direction of the framing camera: from the front (-y), looking down.
 AZIMUTH = 90.0  # deg
 ELEVATION = -40.0  # deg
+#: Camera distance [m] beyond which the drawn model thickens in proportion.
+OVERLAY_DISTANCE = 0.6
 
 
 def scene_points(world: SimWorld, reach: bool = False) -> FloatArray:
@@ -52,7 +61,7 @@ def scene_points(world: SimWorld, reach: bool = False) -> FloatArray:
     """
     pts = [np.asarray(f.position, dtype=float) for f in world.spec.fixtures]
     for idx in world._cables.values():
-        pts.extend(world._data.xpos[idx.body_ids])
+        pts.extend(world.data.xpos[idx.body_ids])
         start = idx.spec.start
         if reach and start is not None:
             c = np.asarray(world.spec.fixture(start).position, dtype=float)
@@ -61,7 +70,7 @@ def scene_points(world: SimWorld, reach: bool = False) -> FloatArray:
                 pts.append(c + r * np.array([math.cos(a), math.sin(a), 0.0]))
     for arm, state in world._grippers.items():
         if state.held is not None:  # a parked gripper stays out of the picture
-            bodies = world._data.xpos[world._gripper_bodies[arm]]
+            bodies = world.data.xpos[world._gripper_bodies[arm]]
             pts.extend(bodies)
             pts.append(bodies[0] + np.array([0.0, 0.0, 0.06]))  # the gripper's top
     return np.array(pts, dtype=float).reshape(-1, 3)
@@ -78,6 +87,7 @@ class SceneRenderer:
             or None for a free camera that frames :func:`scene_points` (see
             :meth:`look_at`).
         shadows: Draw shadows (about 3x slower).
+        labels: Write the fixtures' names and types above them.
 
     Raises:
         SimulationError: if offscreen OpenGL is unavailable.
@@ -91,12 +101,13 @@ class SceneRenderer:
         height: int = 480,
         camera: str | None = "overview",
         shadows: bool = True,
+        labels: bool = True,
     ) -> None:
         if not (0 < width <= 1280 and 0 < height <= 960):
             raise InvalidArgumentError(
                 f"frame size must be within 1280 x 960, got {width} x {height}"
             )
-        model = world._model
+        model = world.model
         if camera is not None and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_CAMERA, camera) < 0:
             raise InvalidArgumentError(f"no camera named {camera!r} in the scene")
         self._world = world
@@ -111,6 +122,10 @@ class SceneRenderer:
                 " Install Mesa's libEGL (MUJOCO_GL=egl) or OSMesa (MUJOCO_GL=osmesa)"
             ) from exc
         self._shadows = shadows
+        self._labels = labels
+        self._overlay_scale = 1.0
+        self._fixture_colours = fixture_colours(model, world.spec.fixtures)
+        self._fixture_labels = fixture_labels(world.spec.fixtures)
         self._option = mujoco.MjvOption()
         self._option.flags[mujoco.mjtVisFlag.mjVIS_FLEXVERT] = (
             False  # draw the cable, not its vertices
@@ -141,7 +156,7 @@ class SceneRenderer:
         right = np.cross(forward, [0.0, 0.0, 1.0])
         right /= np.linalg.norm(right)
         up = np.cross(right, forward)
-        tan_v = math.tan(math.radians(float(self._world._model.vis.global_.fovy)) / 2.0)
+        tan_v = math.tan(math.radians(float(self._world.model.vis.global_.fovy)) / 2.0)
         tan_h = tan_v * self._aspect
         rel = pts - centre
         depth = rel @ forward  # a point at distance D + depth from the eye
@@ -150,11 +165,19 @@ class SceneRenderer:
         cam.type = mujoco.mjtCamera.mjCAMERA_FREE
         cam.lookat[:] = centre
         cam.distance = distance
+        self._overlay_scale = max(1.0, distance / OVERLAY_DISTANCE)
         cam.azimuth = AZIMUTH
         cam.elevation = ELEVATION
 
-    def frame(self) -> UInt8Array:
+    def frame(self, model: ModelShapes | None = None) -> UInt8Array:
         """The scene now, as RGB pixels of shape (height, width, 3).
+
+        Fixtures are drawn in their type's colour (anchor green, peg blue,
+        clip magenta) with their names above them.
+
+        Args:
+            model: The robot's cable model to draw over the scene
+                (:func:`~tautwire.sim.model_overlay.model_shapes`), or None.
 
         Raises:
             SimulationError: if the renderer was closed.
@@ -162,9 +185,16 @@ class SceneRenderer:
         if self._renderer is None:
             raise SimulationError("the renderer is closed")
         self._renderer.update_scene(
-            self._world._data, camera=self._camera, scene_option=self._option
+            self._world.data, camera=self._camera, scene_option=self._option
         )
-        self._renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = self._shadows
+        scene = self._renderer.scene
+        style_scene(scene, self._fixture_colours, self._fixture_labels if self._labels else [])
+        if model is not None:
+            draw_shapes(scene, model, scale=self._overlay_scale)
+        for i in range(scene.nlight):  # even light: the scene's key light is a spot
+            if not scene.lights[i].headlight:
+                scene.lights[i].type = mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
+        scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = self._shadows
         pixels: UInt8Array = self._renderer.render().copy()
         return pixels
 
