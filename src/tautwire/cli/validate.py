@@ -32,10 +32,17 @@ def summarise(scenario: Scenario) -> list[str]:
             f"  {cable.name}: {cable.length:g} m, {cable.stiffness:g} N/m, "
             f"route {' -> '.join(route)}, held by {holds}"
         )
+        if cable.route:
+            entries = []
+            for e in cable.route:
+                how = ([e.side] if e.side else []) + ([f"wind {e.wind}"] if e.wind else [])
+                entries.append(e.fixture + (f" ({', '.join(how)})" if how else ""))
+            lines.append(f"    target route: {' -> '.join(entries)}")
     lines.append(f"task steps: {len(scenario.task)}")
     for n, step in enumerate(scenario.task, start=1):
         params = ", ".join(f"{k}={_value(v)}" for k, v in step.params.items())
-        lines.append(f"  {n}. {step.letter} {step.primitive}({params})")
+        letter = f"{step.letter} " if step.letter else ""
+        lines.append(f"  {n}. {letter}{step.primitive}({params})")
     if scenario.faults:
         lines.append(f"faults (simulation only): {len(scenario.faults)}")
         for fault in scenario.faults:
