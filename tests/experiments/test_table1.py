@@ -180,3 +180,29 @@ def test_ctrl_c_stops_a_local_campaign_and_keeps_its_trials(tmp_path: Path) -> N
     report = json.loads(out.strip().splitlines()[-1])
     assert report["interrupted"] and 2 <= report["finished"] < report["planned"] == 40
     assert len(rows(tmp_path / "table1_trials.csv")) == report["finished"]
+
+
+def test_resume_reruns_trials_the_infrastructure_failed(tmp_path: Path) -> None:
+    from tautwire.experiments.campaign import failed_trial
+
+    def flaky(spec: TrialSpec) -> TrialResult:
+        cause = {1: "crashed", 2: "hung", 3: "error"}.get(spec.index)
+        if cause is not None:
+            return failed_trial(spec, cause, "the worker process died")
+        return fake_trials.quick_trial(spec)  # index 5 fails with a timeout: an outcome
+
+    first = reproduce_table1(6, 1, 0, tmp_path, "serial", "D", trial=flaky)
+    assert first["primitives"][0]["causes"] == {"crashed": 1, "hung": 1, "error": 1, "timeout": 1}
+
+    ran: list[int] = []
+
+    def counting(spec: TrialSpec) -> TrialResult:
+        ran.append(spec.index)
+        return fake_trials.quick_trial(spec)
+
+    resumed = reproduce_table1(6, 1, 0, tmp_path, "serial", "D", resume=True, trial=counting)
+    assert ran == [1, 2, 3]  # the timeout of trial 5 is the trial's own outcome: kept
+    assert resumed["resumed"] == 3
+    assert resumed["primitives"][0]["causes"] == {"timeout": 2}
+    csv_causes = [r["cause"] for r in rows(tmp_path / "table1_trials.csv")]
+    assert csv_causes == ["", "", "timeout", "", "", "timeout"]

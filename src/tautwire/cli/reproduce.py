@@ -116,7 +116,8 @@ REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
 @click.option(
     "--resume",
     is_flag=True,
-    help="table1: reuse the trials of the same campaign already in the output folder",
+    help="table1: reuse the trials of the same campaign already in the output folder "
+    "(those that crashed, hung or raised an internal error run again)",
 )
 @click.option(
     "--no-faults",

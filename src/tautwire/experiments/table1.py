@@ -35,6 +35,7 @@ from typing import Any, NamedTuple
 from tautwire.errors import InvalidArgumentError
 from tautwire.experiments.campaign import (
     TrialFunction,
+    is_trial_outcome,
     result_order,
     run_campaign,
 )
@@ -340,7 +341,8 @@ def _reusable(path: Path, specs: Sequence[TrialSpec]) -> list[TrialResult]:
                 f"not {spec.seed}: it is another campaign's (another --seed); "
                 "drop --resume or choose another --out"
             )
-        found[(result.letter, result.index)] = result
+        if is_trial_outcome(result):  # a crashed, hung or internal-error trial reruns
+            found[(result.letter, result.index)] = result
     return sorted(found.values(), key=result_order)
 
 
@@ -371,7 +373,10 @@ def reproduce_table1(
         address: A Ray cluster's address (``ray`` backend only).
         resume: Reuse the trials of this campaign already in the output
             folder's CSV file (an earlier, interrupted run) instead of
-            rerunning them; rows of other trials in it are dropped.
+            rerunning them; rows of other trials in it are dropped, and so
+            are trials that crashed, hung or raised an internal error
+            (:data:`~tautwire.experiments.campaign.INFRASTRUCTURE_CAUSES`):
+            those run again.
         trial_timeout: ``local`` only: wall time [s] after which a trial is
             stopped and recorded as failed with cause ``"hung"``.
         trial: The trial function (tests pass fakes).
