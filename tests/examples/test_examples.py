@@ -23,10 +23,10 @@ def example_main(name: str) -> Callable[..., Any]:
 
 
 def test_every_example_is_tested() -> None:
-    tested = {"contact_filter_on_arrays", "own_robot", "step_by_step", "plan_and_run_route"}
+    tested = {"contact_filter_on_arrays", "own_robot", "step_by_step", "plan_route"}
     scripts = {p.stem for p in EXAMPLES.glob("*.py")}
     assert scripts <= tested, f"untested examples: {sorted(scripts - tested)}"
-    assert len(scripts) >= 3
+    assert len(scripts) >= 4
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])
@@ -74,3 +74,17 @@ def test_step_by_step(capsys: pytest.CaptureFixture[str]) -> None:
     out = capsys.readouterr().out
     assert out.count("success after") == 2
     assert "contact  P1" in out
+
+
+def test_plan_route(capsys: pytest.CaptureFixture[str]) -> None:
+    plan = example_main("plan_route")()
+    steps = [s.primitive for s in plan.steps]
+    assert steps[0] == "single_arm_tension"
+    assert [s.params.get("clip") for s in plan.steps if s.primitive == "single_arm_clipping"] == [
+        "C1",
+        "C2",
+    ]
+    assert steps.count("rotate_around_feature_point") == 1
+    out = capsys.readouterr().out
+    assert "the planned task validates: 17 steps" in out
+    assert "a 0.40 m cable: cable W1, route entry" in out
