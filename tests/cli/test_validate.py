@@ -1,5 +1,6 @@
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -46,3 +47,97 @@ def test_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
 def test_usage_error_without_argument(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["validate"]) == 2
     assert "SCENARIO" in capsys.readouterr().err
+
+
+def _edited(tmp_path: Path, old: str, new: str, name: str = "s.yaml") -> tuple[Path, str]:
+    text = (SCENARIOS / "peg-and-clip.yaml").read_text(encoding="utf-8")
+    assert text.count(old) == 1
+    path = tmp_path / name
+    path.write_text(text.replace(old, new), encoding="utf-8")
+    return path, text
+
+
+def test_a_control_period_the_simulator_refuses_is_an_error(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path, text = _edited(tmp_path, "control_period: 0.004", "control_period: 0.0045")
+    assert main(["validate", str(path)]) == 1
+    out, err = capsys.readouterr()
+    line = text[: text.index("control_period")].count("\n") + 1
+    assert out == "" and err.count("\n") == 1
+    assert err.startswith(f"tautwire: error: {path}:{line}: robot.control_period: not simulable")
+    assert "whole multiple of 0.001 s" in err
+
+
+def test_a_cable_the_wave_speed_guard_refuses_is_an_error(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path, _ = _edited(tmp_path, "force_limit: 15.0", "force_limit: 100000.0")
+    assert main(["validate", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and ": cables[0]: not simulable: cable W1: the wave-speed" in err
+
+
+def test_json_of_a_valid_and_an_invalid_scenario(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["validate", str(SCENARIOS / "peg-and-clip.yaml"), "--json"]) == 0
+    out, err = capsys.readouterr()
+    obj = json.loads(out)
+    assert err == "" and obj["valid"] is True and obj["problems"] == []
+    assert obj["scenario"]["cables"][0]["stiffness"] == 200.0
+    path, _ = _edited(tmp_path, "seed: 3", "seed: x\ncolour: red")
+    assert main(["validate", str(path), "--json"]) == 1
+    out, err = capsys.readouterr()
+    obj = json.loads(out)
+    assert obj["valid"] is False and "scenario" not in obj
+    assert [p["field"] for p in obj["problems"]] == ["seed", "colour"]
+    assert err.count("\n") == 2 and all(e.startswith("tautwire: error: ") for e in err.splitlines())
+
+
+def test_every_problem_is_one_line_of_stderr(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path, _ = _edited(tmp_path, "  force_limit: 15.0", "  force_limt: 15.0\n  colour: red")
+    assert main(["validate", str(path)]) == 1
+    lines = capsys.readouterr().err.splitlines()
+    assert len(lines) == 2 and "did you mean 'force_limit'?" in lines[0]
+
+
+ALIAS_BOMB = "a: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(
+    f"{b}: &{b} [{', '.join([f'*{a}'] * 9)}]\n" for a, b in zip("abcdefgh", "bcdefghi", strict=True)
+)
+
+
+@pytest.mark.parametrize(
+    ("content", "words"),
+    [
+        (b"version: 1\nname: a\x00b\n", "control character U+0000"),
+        (ALIAS_BOMB.encode(), "through aliases"),
+        (b"x: " + b"[" * 5000 + b"]" * 5000, "nest"),
+        (b"version: 1\n\xff\xfe\n", "not UTF-8 text"),
+        (b"version: 1\n  - : : [\n", "invalid YAML"),
+        (b"", "empty"),
+    ],
+    ids=["nul", "alias-bomb", "deep", "not-utf8", "syntax", "empty"],
+)
+def test_hostile_files_give_one_line_and_status_1(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], content: bytes, words: str
+) -> None:
+    path = tmp_path / "hostile.yaml"
+    path.write_bytes(content)
+    assert main(["validate", str(path)]) == 1
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and words in err
+    assert err.startswith(f"tautwire: error: {path}")
+
+
+def test_a_huge_file_is_one_line_and_status_1(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "huge.yaml"
+    with path.open("wb") as fh:
+        fh.truncate(19_000_000)
+    assert main(["validate", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "19,000,000 bytes is larger than 1,000,000" in err

@@ -2,9 +2,14 @@
 
 from __future__ import annotations
 
+import json
+from typing import Any
+
 import click
 
-from tautwire.scenario import Scenario, load_scenario
+from tautwire.scenario import Scenario, ScenarioError, load_scenario
+from tautwire.scenario.issue import Issue
+from tautwire.scenario.loader import issues_error, read_scenario_text
 from tautwire.scenario.registry import resolve_scenario
 
 
@@ -70,15 +75,76 @@ def _value(value: float | str | list[float]) -> str:
     return value
 
 
-@click.command("validate")
-@click.argument("scenario", type=click.Path(dir_okay=False, path_type=str))
-def validate(scenario: str) -> int:
-    """Check the scenario file SCENARIO; print a summary if it is valid.
+def problems_to_json(error: ScenarioError) -> list[dict[str, Any]]:
+    """The problems of a scenario error as ``--json`` data (line null when unknown)."""
+    return [
+        {"file": p.path, "line": p.line, "field": p.field, "message": p.message}
+        for p in error.problems
+    ]
 
-    On the first problem found, print one line FILE:LINE: FIELD: what is
-    wrong (what is expected) on stderr and exit with status 1.
+
+EPILOG = """\b
+Examples:
+  tautwire validate my-board.yaml
+  tautwire validate peg-and-clip          # a scenario that ships with tautwire
+  tautwire validate my-board.yaml --json  # {"valid": ..., "problems": [...], "scenario": ...}
+
+\b
+Checks the schema (every key, type, range and unit), names and references,
+geometry (reach, cable length along its route), and what the simulator
+would refuse when it builds the world: the control period against the
+physics timestep (a whole multiple of it), the wave-speed guard at the
+force limit, the initial route, the compiled MuJoCo model. Every problem
+is listed, one line each: FILE:LINE: FIELD: what is wrong (what is
+expected). Exit status 0 if valid, 1 otherwise.
+"""
+
+
+@click.command("validate", epilog=EPILOG)
+@click.argument("scenario", metavar="SCENARIO")
+@click.option(
+    "--json",
+    "as_json",
+    is_flag=True,
+    help="Print one JSON object on stdout: valid, problems, and the scenario as read.",
+)
+def validate(scenario: str, as_json: bool) -> int:
+    """Check the scenario SCENARIO (a file, or a registered name); summarise it if valid.
+
+    Every problem found goes to stderr, one line each, and the exit status is 1.
     """
-    loaded = load_scenario(resolve_scenario(scenario))
+    path = resolve_scenario(scenario)
+    try:
+        loaded = load_scenario(path)
+        issues = _simulation_issues(loaded)
+        if issues:
+            raise issues_error(read_scenario_text(path), str(path), issues)
+    except ScenarioError as exc:
+        if as_json:
+            click.echo(
+                json.dumps({"file": str(path), "valid": False, "problems": problems_to_json(exc)})
+            )
+        raise
+    if as_json:
+        click.echo(
+            json.dumps(
+                {
+                    "file": str(path),
+                    "valid": True,
+                    "problems": [],
+                    "scenario": loaded.model_dump(mode="json"),
+                },
+                allow_nan=False,
+            )
+        )
+        return 0
     for line in summarise(loaded):
         click.echo(line)
     return 0
+
+
+def _simulation_issues(scenario: Scenario) -> list[Issue]:
+    """What the simulated world would refuse (:mod:`tautwire.sim.preflight`)."""
+    from tautwire.sim.preflight import simulation_issues
+
+    return simulation_issues(scenario)

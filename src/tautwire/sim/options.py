@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from tautwire.errors import InvalidArgumentError
+from tautwire.errors import InvalidArgumentError, SimulationError
 from tautwire.scenario.models import CLIP_LENGTH
 
 
@@ -142,3 +142,23 @@ class SimOptions:
                 f"unknown simulation option(s) {unknown}; valid options: {sorted(valid)}"
             )
         return cls(**kwargs)
+
+
+def control_substeps(control_period: float, timestep: float) -> int:
+    """Physics steps per control period: the period must be a whole multiple of dt.
+
+    Args:
+        control_period: Time between two robot commands [s].
+        timestep: Physics step dt [s].
+
+    Raises:
+        SimulationError: if the period is not a whole multiple (>= 1) of the timestep.
+    """
+    substeps = control_period / timestep
+    if abs(substeps - round(substeps)) > 1e-6 or round(substeps) < 1:
+        nearest = max(round(substeps), 1) * timestep
+        raise SimulationError(
+            f"the timestep {timestep} s must divide the control period {control_period} s"
+            f" (expected a whole multiple of {timestep} s, e.g. {nearest:g})"
+        )
+    return round(substeps)

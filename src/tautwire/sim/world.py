@@ -26,7 +26,7 @@ from tautwire.robot.command import GripperCommand
 from tautwire.sim.diverged import SimulationDiverged
 from tautwire.sim.gripper_state import GripperState, integrate_pose
 from tautwire.sim.mjcf import SceneModel, hold_equality, scene_model, vertex_body
-from tautwire.sim.options import SimOptions
+from tautwire.sim.options import SimOptions, control_substeps
 from tautwire.sim.spec import CableSpec, WorldSpec
 from tautwire.sim.transmitted_wrench import free_joint_wrench
 
@@ -138,13 +138,7 @@ class SimWorld:
         self._spec = spec
         self._options = options or SimOptions()
         opt = self._options
-        substeps = spec.control_period / opt.timestep
-        if abs(substeps - round(substeps)) > 1e-6 or round(substeps) < 1:
-            raise SimulationError(
-                f"the timestep {opt.timestep} s must divide the control period"
-                f" {spec.control_period} s"
-            )
-        self._substeps = round(substeps)
+        self._substeps = control_substeps(spec.control_period, opt.timestep)
         self._scene: SceneModel = scene_model(spec, opt)
         self._model = compile_model(self._scene.xml)
         self._data = mujoco.MjData(self._model)
