@@ -17,7 +17,7 @@ def test_valid_scenario_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> 
     assert status == 0 and err == ""
     assert "scenario 'harness'" in out and "valid" in out
     assert "fixtures: 8" in out and "cables: 2" in out and "task steps: 28" in out
-    assert "W1: 0.8 m, 200 N/m, route A1, held by left at 0.35 m" in out
+    assert "W1: 0.6 m, 200 N/m, route A1, held by left at 0.35 m" in out
     assert "target route: P1 (left) -> C1 -> C2" in out
     assert "target route: P2 (right, wind 1) -> C3 -> C4" in out
     assert "8. F single_arm_clipping(arm=left, clip=C1, cable=W1)" in out

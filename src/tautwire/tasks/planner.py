@@ -893,7 +893,7 @@ class _Planner:
         """Slide the cable out (E) until ``need`` [m] of it lies past the last fixed point."""
         if cable.free >= need:
             return
-        distance = need - cable.free + LEAD - MIN_LEAD
+        distance = need - cable.free
         if cable.at + distance > cable.spec.length + 1e-9:
             total = cable.s_contact + need
             raise self.fail(
@@ -902,6 +902,7 @@ class _Planner:
                 f"(the route so far {cable.s_contact:.3f} m plus {need:.3f} m), it is "
                 f"{cable.spec.length:.3f} m long",
             )
+        distance = min(distance + LEAD - MIN_LEAD, cable.spec.length - cable.at)
         out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
         self.check_reach(cable, out, "sliding the cable out")
         self.emit(
