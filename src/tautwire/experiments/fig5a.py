@@ -146,10 +146,8 @@ def run_case(
 
 def reproduce_fig5a(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     """Run all cases; write fig5a.png, fig5a.csv and fig5a.json under ``out_dir``."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -157,7 +155,9 @@ def reproduce_fig5a(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     excitation, learn_excitation = default.excitation, default.learn_excitation
     cases = []
     rows = []
-    fig, (ax_e, ax_k) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    fig = Figure(figsize=(8, 6), layout="constrained")  # no pyplot: the backend is left alone
+    FigureCanvasAgg(fig)
+    ax_e, ax_k = fig.subplots(2, 1, sharex=True)
     colours = {10.0: "tab:blue", 100.0: "tab:orange", 1000.0: "tab:green"}
     for k in STIFFNESSES:
         for adaptive in (True, False):
@@ -196,7 +196,6 @@ def reproduce_fig5a(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     for ax in (ax_e, ax_k):
         ax.grid(alpha=0.3)
     fig.savefig(out / "fig5a.png", dpi=120)
-    plt.close(fig)
     with (out / "fig5a.csv").open("w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(

@@ -166,10 +166,8 @@ def _write_csv(path: Path, series: dict[str, list[Any]]) -> None:
 
 def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     """Fig. 5b on the shipped scenario ``anchor-rotate``; writes fig5b.png/csv/json."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -179,7 +177,9 @@ def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     t = np.asarray(s["t"])
     grip = np.asarray(s["gripper"])
     vx = np.gradient(grip[:, 0], t) if len(t) > 2 else np.zeros(len(t))
-    fig, ax = plt.subplots(figsize=(8, 4), constrained_layout=True)
+    fig = Figure(figsize=(8, 4), layout="constrained")  # no pyplot: the backend is left alone
+    FigureCanvasAgg(fig)
+    ax = fig.subplots()
     ax.plot(k, 1e3 * std[:, 0], color="tab:red", label="uncertainty std_x [mm]")
     ax2 = ax.twinx()
     ax2.plot(k, -vx, color="tab:blue", lw=1.0, label="-v_x [m/s] (mirrored, as the paper)")
@@ -195,7 +195,6 @@ def reproduce_fig5b(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
     ax2.legend(loc="upper right", fontsize=8)
     ax.grid(alpha=0.3)
     fig.savefig(out / "fig5b.png", dpi=120)
-    plt.close(fig)
     _write_csv(out / "fig5b.csv", s)
     err = np.linalg.norm(est - truth, axis=1)
     valid = ~np.isnan(std[:, 0])

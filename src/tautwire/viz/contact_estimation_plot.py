@@ -1,15 +1,17 @@
-"""Contact estimation error and uncertainty per axis (as the paper's Fig. 5c)."""
+"""Contact estimation error and uncertainty per axis (as the paper's Fig. 5c).
+
+Drawn on a :class:`matplotlib.figure.Figure` with the Agg canvas, without
+pyplot: importing or calling this never changes the process's backend.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.figure import Figure
 from numpy.typing import ArrayLike
 
 AXIS_COLOURS = ("tab:red", "tab:green", "tab:blue")
@@ -44,7 +46,9 @@ def plot_contact_estimation(
     x = np.asarray(samples, dtype=float)
     e = 1e3 * np.asarray(error, dtype=float)
     s = 1e3 * np.asarray(std, dtype=float)
-    fig, (ax_e, ax_s) = plt.subplots(2, 1, sharex=True, figsize=(8, 6), constrained_layout=True)
+    fig = Figure(figsize=(8, 6), layout="constrained")  # no pyplot: the backend is left alone
+    FigureCanvasAgg(fig)
+    ax_e, ax_s = fig.subplots(2, 1, sharex=True)
     for i, (name, colour) in enumerate(zip("xyz", AXIS_COLOURS, strict=True)):
         ax_e.plot(x, e[:, i], color=colour, lw=1.2, label=f"{name}")
         ax_s.plot(x, s[:, i], color=colour, lw=1.2, label=f"{name}")
@@ -63,5 +67,4 @@ def plot_contact_estimation(
     out = Path(path)
     out.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(out, dpi=120)
-    plt.close(fig)
     return out
