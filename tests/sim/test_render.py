@@ -72,3 +72,11 @@ def test_scene_points_and_look_at() -> None:
         pytest.skip(str(exc))
     with renderer, pytest.raises(InvalidArgumentError, match="fixed camera"):
         renderer.look_at(now)
+
+
+def test_write_png_round_trips_exactly(tmp_path) -> None:
+    import imageio.v3 as iio
+
+    pixels = np.random.default_rng(0).integers(0, 256, size=(7, 11, 3), dtype=np.uint8)
+    write_png(pixels, tmp_path / "x.png")
+    np.testing.assert_array_equal(iio.imread(tmp_path / "x.png"), pixels)

@@ -19,8 +19,6 @@ from __future__ import annotations
 
 import math
 import os
-import struct
-import zlib
 from pathlib import Path
 from types import TracebackType
 
@@ -227,20 +225,14 @@ def render_frame(world: SimWorld, width: int = 640, height: int = 480) -> UInt8A
 
 
 def write_png(pixels: UInt8Array, path: str | Path) -> None:
-    """Write RGB pixels (height, width, 3) as a PNG file (no imaging library needed)."""
+    """Write RGB pixels (height, width, 3) as a PNG file (through imageio).
+
+    Raises:
+        InvalidArgumentError: if ``pixels`` is not (height, width, 3).
+    """
+    import imageio.v3 as iio
+
     arr = np.ascontiguousarray(pixels, dtype=np.uint8)
     if arr.ndim != 3 or arr.shape[2] != 3:
         raise InvalidArgumentError(f"pixels must have shape (height, width, 3), got {arr.shape}")
-    h, w, _ = arr.shape
-    raw = b"".join(b"\x00" + arr[row].tobytes() for row in range(h))
-
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        return (
-            struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
-        )
-
-    png = b"\x89PNG\r\n\x1a\n"
-    png += chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-    png += chunk(b"IDAT", zlib.compress(raw, 6))
-    png += chunk(b"IEND", b"")
-    Path(path).write_bytes(png)
+    iio.imwrite(Path(path), arr, extension=".png")
