@@ -11,5 +11,6 @@ from tautwire.cli.reproduce import reproduce
 from tautwire.cli.run import run
 from tautwire.cli.scenarios import scenarios
 from tautwire.cli.validate import validate
+from tautwire.cli.view import view
 
-ALL: list[click.Command] = [demo, run, validate, estimate, reproduce, scenarios, plan]
+ALL: list[click.Command] = [demo, run, validate, estimate, reproduce, scenarios, plan, view]
