@@ -59,6 +59,8 @@ SAME_CONTACT = 0.03
 
 #: Largest distance [m] between a fixture's design position and a trusted estimate of it.
 DESIGN_GATE = 0.03
+#: Direction of a peg's axis (pegs stand on the board, along the world's vertical).
+PEG_AXIS = np.array([0.0, 0.0, 1.0])
 
 #: A filter sample pulling below this fraction of the slowly followed pull is skipped.
 WEAK_PULL = 0.5
@@ -373,12 +375,20 @@ class ModelEstimator:
         nearly parallel: small systematic errors (sag, vibration) can make
         them meet far along the cable, with a small covariance. An estimate
         further than ``DESIGN_GATE`` from the design position is not trusted.
-        A point found by the filter alone has no design: always True.
+        A point found by the filter alone has no design: always True. A peg
+        is compared normal to its axis (the world's vertical): where along it
+        the cable bears is the cable's height, not the design's mid-height.
         """
         if self._design is None:
             return True
         accepted = self._accepted_estimate()
-        return accepted is not None and norm3(accepted.x - self._design) <= DESIGN_GATE
+        if accepted is None:
+            return False
+        off = accepted.x - self._design
+        point = self._filter_point
+        if point is not None and point.label in self.round_fixtures:
+            off = off - PEG_AXIS * float(PEG_AXIS @ off)
+        return norm3(off) <= DESIGN_GATE
 
     def _track(self, c: int | None) -> bool:
         """Point the contact filter at point ``c``; False if ``c`` needs no filter.
