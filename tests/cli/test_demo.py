@@ -28,8 +28,21 @@ def test_demo_table(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
 
 @pytest.mark.slow
 def test_simulated_demo_json(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert main(["demo", "--json", "--no-video", "--out", str(tmp_path)]) == 0
+    import importlib.util
+
+    rrd = tmp_path / "demo.rrd"
+    recording = importlib.util.find_spec("rerun") is not None  # the extra tautwire[rerun]
+    extra = ["--rerun", str(rrd)] if recording else []
+    assert main(["demo", "--json", "--no-video", "--out", str(tmp_path), *extra]) == 0
     result = json.loads(capsys.readouterr().out)
+    if recording:
+        from tests.viz.test_rerun_recorder import _rows
+
+        assert result["files"]["rerun"] == str(rrd)
+        rows = _rows(rrd)
+        assert rows["/steps"] == 4  # D and I, a start and an end line each
+        assert rows["/model/points"] == rows["/truth/cable"] > 100
+        assert rows["/contact/estimate"] == rows["/contact/error"] > 100
     run = result["run"]
     assert run["success"] and [s["letter"] for s in run["steps"]] == ["D", "I"]
     anchor = next(c for c in run["contacts"] if c["fixture"] == "A1")

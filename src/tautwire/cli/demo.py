@@ -16,7 +16,15 @@ def _mm(value: float | None) -> str:
     return "-" if value is None else f"{1e3 * value:.2f} mm"
 
 
-@click.command()
+@click.command(
+    epilog="""\b
+Examples:
+  tautwire demo                          # tables; plot, GIF and snapshot under out/demo/
+  tautwire demo --no-video --json        # one JSON object on stdout
+  tautwire demo --rerun out/demo.rrd     # then: rerun out/demo.rrd
+  tautwire demo --synthetic              # the estimators alone, no simulator
+"""
+)
 @click.option(
     "--out",
     "out_dir",
@@ -27,11 +35,30 @@ def _mm(value: float | None) -> str:
 )
 @click.option("--seed", type=int, default=None, help="random seed (default: the scenario's)")
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
-@click.option("--no-video", is_flag=True, help="do not render a video")
+@click.option(
+    "--video/--no-video",
+    default=True,
+    show_default=True,
+    help="render a GIF and a snapshot (where rendering works)",
+)
+@click.option(
+    "--rerun",
+    "rerun_file",
+    type=click.Path(dir_okay=False),
+    default=None,
+    help="also record the run to this Rerun file (.rrd; needs the extra tautwire[rerun])",
+)
 @click.option(
     "--synthetic", is_flag=True, help="the estimators alone on synthetic data (no simulator)"
 )
-def demo(out_dir: str, seed: int | None, as_json: bool, no_video: bool, synthetic: bool) -> int:
+def demo(
+    out_dir: str,
+    seed: int | None,
+    as_json: bool,
+    video: bool,
+    rerun_file: str | None,
+    synthetic: bool,
+) -> int:
     """Watch a robot find, blind, where a cable touches the board (simulated)."""
     if synthetic:
         return _synthetic(out_dir, seed or 0, as_json)
@@ -52,7 +79,8 @@ def demo(out_dir: str, seed: int | None, as_json: bool, no_video: bool, syntheti
         result = run_sim_demo(
             out_dir,
             seed,
-            video=not no_video,
+            video=video,
+            rerun=rerun_file,
             progress=lambda t: bar.update(task, completed=min(t, 25.0), t=f"{t:5.1f} s"),
         )
     if as_json:

@@ -24,7 +24,7 @@ from tautwire.scenario import Scenario, load_scenario
 from tautwire.scenario.registry import scenario_path
 from tautwire.sim.ground_truth import GroundTruth
 from tautwire.sim.world import SimWorld
-from tautwire.tasks import TickRecord
+from tautwire.tasks import StepReport, TickRecord
 
 ITERATIONS_PER_CIRCLE = 125
 MAX_LINEAR_SPEED = 0.09  # m/s: primitive I's speed within the 0.1 m/s limit
@@ -43,6 +43,9 @@ def record_rotation(
     seed: int | None = None,
     on_time: Callable[[float], None] | None = None,
     on_world: Callable[[SimWorld], None] | None = None,
+    on_tick: Callable[[TickRecord], None] | None = None,
+    on_step: Callable[[int, StepReport], None] | None = None,
+    on_truth: Callable[[GroundTruth], None] | None = None,
 ) -> dict[str, Any]:
     """Run ``scenario`` (D then I) and record every contact-filter iteration of I.
 
@@ -51,6 +54,9 @@ def record_rotation(
         seed: Overrides the scenario's seed.
         on_time: Called every control period with the time [s] (progress, video).
         on_world: Called once with the simulated world (rendering).
+        on_tick: Passed on to :func:`run_scenario` (recording).
+        on_step: Passed on to :func:`run_scenario`.
+        on_truth: Called once with the ground truth (recording; never fed back).
     """
     series: dict[str, list[Any]] = {
         "iteration": [],
@@ -66,6 +72,8 @@ def record_rotation(
     def tick(rec: TickRecord) -> None:
         if on_time is not None:
             on_time(rec.observation.time)
+        if on_tick is not None:
+            on_tick(rec)
         est = rec.context.estimator
         if rec.primitive.letter != "I" or est.iterations == state["last"]:
             return
@@ -95,6 +103,8 @@ def record_rotation(
 
     def keep_truth(truth: GroundTruth) -> None:  # for scoring only
         state["truth"] = truth
+        if on_truth is not None:
+            on_truth(truth)
 
     result, ctx, _ = run_scenario(
         scenario,
@@ -103,6 +113,7 @@ def record_rotation(
         on_tick=tick,
         on_truth=keep_truth,
         on_world=on_world,
+        on_step=on_step,
     )
     first = series["iteration"][0] if series["iteration"] else 0
     # a change declared at filter iteration c shows from the record of iteration c + 1 on

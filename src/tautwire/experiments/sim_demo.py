@@ -19,6 +19,8 @@ from typing import Any
 from tautwire.experiments.fig5bc import record_rotation, series_arrays
 from tautwire.scenario import load_scenario
 from tautwire.scenario.registry import scenario_path
+from tautwire.sim.world import SimWorld
+from tautwire.tasks import TickRecord
 from tautwire.viz.scene_recorder import SceneRecorder
 
 DEMO_SCENARIO = scenario_path("peg-change")
@@ -41,6 +43,7 @@ def run_sim_demo(
     seed: int | None = None,
     video: bool = True,
     progress: Callable[[float], None] | None = None,
+    rerun: str | Path | None = None,
 ) -> SimDemoResult:
     """Run the built-in scenario; write the plot, the result and the video.
 
@@ -50,6 +53,7 @@ def run_sim_demo(
         video: Try to render a GIF and a snapshot (skipped cleanly where
             offscreen rendering is unavailable).
         progress: Called with the simulated time [s] now and then.
+        rerun: Also record the run to this Rerun file (``.rrd``).
     """
     from tautwire.viz.contact_estimation_plot import plot_contact_estimation
 
@@ -57,24 +61,40 @@ def run_sim_demo(
     out.mkdir(parents=True, exist_ok=True)
     scenario = load_scenario(DEMO_SCENARIO)
     recorder = SceneRecorder() if video else None
+    rerun_recorder = None
+    if rerun is not None:
+        from tautwire.viz.rerun_recorder import RerunRecorder
 
-    def on_tick(t: float) -> None:
+        rerun_recorder = RerunRecorder(rerun, name=f"tautwire demo {scenario.name}")
+
+    def on_world(world: SimWorld) -> None:
         if recorder is not None:
-            recorder.tick(t)
-        if progress is not None:
-            progress(t)
+            recorder.attach(world)
+        if rerun_recorder is not None:
+            rerun_recorder.attach(world)
+
+    def on_tick(rec: TickRecord) -> None:
+        if recorder is not None:
+            recorder.tick(rec.observation.time, rec.context.graph)
+        if rerun_recorder is not None:
+            rerun_recorder.tick(rec)
 
     try:
         run = record_rotation(
             scenario,
             seed,
-            on_time=on_tick,
-            on_world=recorder.attach if recorder is not None else None,
+            on_time=progress,
+            on_world=on_world,
+            on_tick=on_tick,
+            on_step=rerun_recorder.step if rerun_recorder is not None else None,
+            on_truth=rerun_recorder.keep_truth if rerun_recorder is not None else None,
         )
         videos = recorder.save(out, "demo.gif", "snapshot.png") if recorder else {}
     finally:
         if recorder is not None:
             recorder.close()
+        if rerun_recorder is not None:
+            rerun_recorder.close()
     s = run["series"]
     k, est, std, truth = series_arrays(s)
     n = len(k)
@@ -92,6 +112,8 @@ def run_sim_demo(
         )
     if recorder is not None:
         result.video_error = recorder.error
+    if rerun_recorder is not None:
+        result.files["rerun"] = str(rerun_recorder.path)
         result.files.update(videos)
     import json
 
