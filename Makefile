@@ -5,7 +5,7 @@ VENV := .venv
 BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed
 
-.PHONY: demo test lint bench docs clean
+.PHONY: demo test lint bench docs packaging clean
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -26,6 +26,11 @@ test: lint
 
 bench: $(STAMP)
 	$(BIN)/python bench/run.py --json
+
+# The wheel in clean venvs: the core alone, the sim extra from another
+# directory, the core tests at the lowest versions allowed (.ci/packaging).
+packaging:
+	PYTHON=$(PYTHON) bash .ci/packaging
 
 # The docs site (mkdocs-material + mkdocstrings), warnings are errors; output in site/.
 $(VENV)/.docs-installed: $(STAMP)

@@ -11,8 +11,6 @@ import math
 import numpy as np
 import pytest
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.experiments.trial import trial_seed
 from tautwire.experiments.trial_scenes import FORCE_LIMIT, trial_scene

@@ -16,8 +16,6 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.model.quaternion import rotate
 from tautwire.primitives.tool_axis import DECIDE_FORCE, ToolAxis

@@ -3,8 +3,6 @@
 import numpy as np
 import pytest
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.primitives import make_primitive
 from tautwire.scenario import load_scenario
 from tautwire.scenario.registry import scenario_path

@@ -16,8 +16,6 @@ from typing import Any
 import numpy as np
 import pytest
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.primitives import CAUSES, make_primitive
 from tautwire.robot import Command

@@ -7,8 +7,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.model import GRAVITY
 from tautwire.scenario import WORKSPACE, load_scenario
 from tautwire.scenario.registry import scenario_folder

@@ -13,8 +13,6 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-pytest.importorskip("mujoco", reason="needs the sim extra (pip install tautwire[sim])")
-
 from tautwire.experiments.run_scenario import RunResult, run_scenario
 from tautwire.scenario import Scenario, load_scenario
 from tautwire.scenario.loader import scenario_from_data
