@@ -6,8 +6,7 @@ import numpy as np
 from hypothesis import strategies as st
 from numpy.typing import NDArray
 
-from tautwire.control.so3 import quaternion_exp
-from tautwire.model.quaternion import multiply
+from tautwire.model.quaternion import multiply, quaternion_exp
 
 FloatArray = NDArray[np.float64]
 

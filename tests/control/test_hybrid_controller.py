@@ -11,10 +11,9 @@ from tautwire.control.hybrid_controller import (
 )
 from tautwire.control.motion_controller import MotionController
 from tautwire.control.safety_limits import SafetyLimits
-from tautwire.control.so3 import quaternion_log
 from tautwire.control.task_space import DualPose, Pose, coordinated_pose, make_pose
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import conjugate, multiply
+from tautwire.model.quaternion import conjugate, multiply, quaternion_log
 
 from .conftest import integrate_orientation, random_quaternion, vectors
 

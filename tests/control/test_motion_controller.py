@@ -7,7 +7,6 @@ from tautwire.control.motion_controller import (
     coordinated_motion_twist,
     individual_motion_twist,
 )
-from tautwire.control.so3 import quaternion_log
 from tautwire.control.task_space import (
     CoordinatedPose,
     DualPose,
@@ -17,7 +16,7 @@ from tautwire.control.task_space import (
     make_pose,
 )
 from tautwire.errors import InvalidArgumentError
-from tautwire.model.quaternion import conjugate, multiply
+from tautwire.model.quaternion import conjugate, multiply, quaternion_log
 
 from .conftest import integrate_orientation, random_quaternion
 

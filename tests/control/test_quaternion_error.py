@@ -2,8 +2,7 @@ import numpy as np
 from hypothesis import assume, given, settings
 
 from tautwire.control.quaternion_error import quaternion_error
-from tautwire.control.so3 import quaternion_exp, quaternion_log
-from tautwire.model.quaternion import conjugate, multiply
+from tautwire.model.quaternion import conjugate, multiply, quaternion_exp, quaternion_log
 
 from .conftest import integrate_orientation, quaternions, random_quaternion, same_rotation, vectors
 

@@ -3,7 +3,6 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from tautwire.control.so3 import quaternion_exp, quaternion_log
 from tautwire.control.task_space import (
     CoordinatedPose,
     DualPose,
@@ -20,7 +19,7 @@ from tautwire.control.task_space import (
 )
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.interpolation import slerp
-from tautwire.model.quaternion import conjugate, multiply
+from tautwire.model.quaternion import conjugate, multiply, quaternion_exp, quaternion_log
 
 from .conftest import integrate_orientation, quaternions, random_quaternion, same_rotation, vectors
 

@@ -5,12 +5,16 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.model import quaternion as qf
 from tautwire.model.quaternion import (
     as_quaternion,
     conjugate,
     from_rotation,
     multiply,
     orientation_along,
+    quaternion_exp,
+    quaternion_log,
+    quaternion_sqrt,
     rotate,
     to_rotation,
 )
@@ -77,3 +81,75 @@ def test_scipy_rotations_keep_the_scalar_first_convention(angle: float) -> None:
     rotated = to_rotation(q).apply([1.0, 0.0, 0.0])
     np.testing.assert_allclose(rotated, [np.cos(angle), np.sin(angle), 0.0], atol=1e-12)
     np.testing.assert_allclose(from_rotation(Rotation.from_rotvec([0, 0, angle])), q, atol=1e-12)
+
+
+def random_quaternion(rng: np.random.Generator) -> np.ndarray:
+    """Uniform random unit quaternion [w, x, y, z] with w >= 0."""
+    q = rng.normal(size=4)
+    q /= np.linalg.norm(q)
+    return q if q[0] >= 0.0 else -q
+
+
+def same_rotation(q1: np.ndarray, q2: np.ndarray, atol: float = 1e-9) -> bool:
+    """Whether two unit quaternions are the same rotation (q or -q)."""
+    return bool(np.allclose(q1, q2, atol=atol) or np.allclose(q1, -q2, atol=atol))
+
+
+def test_exp_of_quarter_turn_about_z() -> None:
+    q = quaternion_exp([0.0, 0.0, np.pi / 2])
+    np.testing.assert_allclose(q, [np.cos(np.pi / 4), 0.0, 0.0, np.sin(np.pi / 4)])
+
+
+@pytest.mark.parametrize("scale", [0.0, 1e-9, 1e-3, 1.0, 3.0])
+def test_log_inverts_exp(scale: float) -> None:
+    rng = np.random.default_rng(1)
+    for _ in range(20):
+        axis = rng.normal(size=3)
+        phi = scale * axis / np.linalg.norm(axis)
+        np.testing.assert_allclose(quaternion_log(quaternion_exp(phi)), phi, atol=1e-12)
+
+
+def test_log_takes_the_shorter_way() -> None:
+    rng = np.random.default_rng(2)
+    for _ in range(20):
+        q = random_quaternion(rng)
+        np.testing.assert_allclose(quaternion_log(-q), quaternion_log(q), atol=1e-12)
+        assert np.linalg.norm(quaternion_log(q)) <= np.pi + 1e-12
+
+
+def test_sqrt_squares_back() -> None:
+    rng = np.random.default_rng(3)
+    for _ in range(50):
+        q = random_quaternion(rng)
+        h = quaternion_sqrt(q)
+        assert same_rotation(multiply(h, h), q, atol=1e-12)
+        assert abs(np.linalg.norm(h) - 1.0) < 1e-12
+
+
+def test_float_fast_path_matches_the_array_functions() -> None:
+    rng = np.random.default_rng(41)
+    for _ in range(50):
+        a = rng.normal(size=4)  # not normalised: positive_floats must normalise
+        q1, q2 = random_quaternion(rng), random_quaternion(rng)
+        v = rng.normal(size=3)
+        f1, f2 = qf.quat_floats(q1), qf.quat_floats(q2)
+        assert qf.multiply_floats(f1, f2) == tuple(multiply(q1, q2))  # the same bits
+        np.testing.assert_array_equal(qf.conjugate_floats(f1), conjugate(q1))
+        np.testing.assert_allclose(
+            qf.positive_floats(qf.quat_floats(a)), as_quaternion(a), atol=1e-14
+        )
+        np.testing.assert_allclose(
+            qf.rotate_floats(f1, qf.vec_floats(v)), rotate(q1, v), atol=1e-12
+        )
+        np.testing.assert_allclose(
+            qf.log_floats(qf.quat_floats(-q1)), quaternion_log(q1), atol=1e-12
+        )
+        np.testing.assert_allclose(
+            qf.sqrt_floats(qf.quat_floats(-q1)), quaternion_sqrt(q1), atol=1e-14
+        )
+
+
+def test_log_of_a_tiny_rotation_and_of_nothing() -> None:
+    q = (np.cos(1e-8), np.sin(1e-8), 0.0, 0.0)
+    np.testing.assert_allclose(qf.log_floats(q), [2e-8, 0.0, 0.0], rtol=1e-9)
+    assert qf.log_floats((0.0, 0.0, 0.0, 0.0)) == (0.0, 0.0, 0.0)

@@ -21,7 +21,6 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from tautwire.control import _quaternion_floats as qf
 from tautwire.control.quaternion_error import quaternion_error
 from tautwire.control.task_space import (
     CoordinatedPose,
@@ -31,6 +30,7 @@ from tautwire.control.task_space import (
     individual_twist,
 )
 from tautwire.errors import InvalidArgumentError
+from tautwire.model import quaternion as qf
 
 FloatArray = NDArray[np.float64]
 
@@ -118,7 +118,7 @@ def coordinated_motion_command(
     v_rel = controller.linear(desired.relative.position, now.relative.position)
     w_rel_right = controller.angular(desired.relative.orientation, now.relative.orientation)
     # right tool frame -> world
-    w_rel = qf.rotate_v(qf.quat(current.right.orientation), qf.vec(w_rel_right))
+    w_rel = qf.rotate_floats(qf.quat_floats(current.right.orientation), qf.vec_floats(w_rel_right))
     return np.concatenate((zeta_abs, v_rel, w_rel))
 
 

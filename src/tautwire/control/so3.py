@@ -1,9 +1,8 @@
-"""Rotation-vector algebra on SO(3) for the coordinated task space.
+"""The left Jacobian of SO(3) for the coordinated task space.
 
-Small, allocation-light helpers in the project's [w, x, y, z] quaternion
-convention: the exponential and logarithm between unit quaternions and
-rotation vectors, the quaternion power used by the Slerp midpoint, and the
-left Jacobian J_l of SO(3) with its inverse.
+The skew matrix and the left Jacobian J_l of SO(3) with its inverse. The
+quaternion exponential, logarithm and square root (the Slerp midpoint) are
+in :mod:`tautwire.model.quaternion`, the one quaternion module.
 
 The left Jacobian relates the rate of a rotation vector phi to the spatial
 (left) angular velocity Omega of R = Exp(phi):
@@ -43,66 +42,6 @@ def skew(v: ArrayLike) -> FloatArray:
     """
     x, y, z = np.asarray(v, dtype=float)
     return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
-
-
-def quaternion_log(q: ArrayLike) -> FloatArray:
-    """Rotation vector phi [rad] of the unit quaternion ``q`` = [w, x, y, z].
-
-    The sign of ``q`` is chosen so that w >= 0: the result is the shortest
-    rotation, |phi| <= pi.
-
-    Args:
-        q: Unit quaternion [w, x, y, z].  # (4,)
-
-    Returns:
-        Rotation vector (axis times angle) [rad].  # (3,)
-    """
-    w, x, y, z = (float(c) for c in np.asarray(q, dtype=float))
-    if w < 0.0:
-        w, x, y, z = -w, -x, -y, -z
-    s = math.sqrt(x * x + y * y + z * z)
-    if s < _SMALL_ANGLE:
-        scale = 2.0 / w if w > 0.0 else 0.0  # theta = 2 asin(s) ~ 2 s / w
-        return np.array([scale * x, scale * y, scale * z])
-    theta = 2.0 * math.atan2(s, w)
-    scale = theta / s
-    return np.array([scale * x, scale * y, scale * z])
-
-
-def quaternion_exp(phi: ArrayLike) -> FloatArray:
-    """Unit quaternion [w, x, y, z] of the rotation vector ``phi`` [rad].
-
-    Args:
-        phi: Rotation vector (axis times angle) [rad].  # (3,)
-
-    Returns:
-        Unit quaternion [w, x, y, z].  # (4,)
-    """
-    px, py, pz = (float(c) for c in np.asarray(phi, dtype=float))
-    theta = math.sqrt(px * px + py * py + pz * pz)
-    if theta < _SMALL_ANGLE:
-        half = 0.5 - theta * theta / 48.0  # sin(theta/2)/theta
-        return np.array([math.cos(0.5 * theta), half * px, half * py, half * pz])
-    half = math.sin(0.5 * theta) / theta
-    return np.array([math.cos(0.5 * theta), half * px, half * py, half * pz])
-
-
-def quaternion_sqrt(q: ArrayLike) -> FloatArray:
-    """Square root ``q^(1/2)`` along the shortest arc (half the rotation).
-
-    Args:
-        q: Unit quaternion [w, x, y, z].  # (4,)
-
-    Returns:
-        Unit quaternion [w, x, y, z] with w > 0 whose square is +-q.  # (4,)
-    """
-    w, x, y, z = (float(c) for c in np.asarray(q, dtype=float))
-    if w < 0.0:
-        w, x, y, z = -w, -x, -y, -z
-    # half-angle formula: cos(theta/4) = sqrt((1 + cos(theta/2)) / 2)
-    c = math.sqrt(max(0.5 * (1.0 + w), 0.0))
-    scale = 0.5 / c  # sin(theta/2) / sin(theta/4) = 2 cos(theta/4)
-    return np.array([c, scale * x, scale * y, scale * z])
 
 
 def left_jacobian_coefficients(theta: float) -> tuple[float, float]:

@@ -45,12 +45,12 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from tautwire.control import _quaternion_floats as qf
 from tautwire.control.so3 import (
     inverse_left_jacobian_coefficients,
     left_jacobian_coefficients,
 )
 from tautwire.errors import InvalidArgumentError
+from tautwire.model import quaternion as qf
 from tautwire.model.quaternion import as_quaternion
 
 FloatArray = NDArray[np.float64]
@@ -116,7 +116,7 @@ def coordinated_pose(pose: DualPose) -> CoordinatedPose:
         The coordinated pose (quaternions with w >= 0).
     """
     q_right, q_rel = _right_and_relative(pose)
-    q_abs = qf.positive(qf.mul(q_right, qf.sqrt_q(q_rel)))
+    q_abs = qf.positive_floats(qf.multiply_floats(q_right, qf.sqrt_floats(q_rel)))
     p_left = np.asarray(pose.left.position, dtype=float)
     p_right = np.asarray(pose.right.position, dtype=float)
     return CoordinatedPose(
@@ -134,13 +134,18 @@ def individual_pose(pose: CoordinatedPose) -> DualPose:
     Returns:
         The individual pose (quaternions with w >= 0).
     """
-    half = qf.sqrt_q(qf.quat(pose.relative.orientation))
-    q_abs = qf.quat(pose.absolute.orientation)
+    half = qf.sqrt_floats(qf.quat_floats(pose.relative.orientation))
+    q_abs = qf.quat_floats(pose.absolute.orientation)
     p_abs = np.asarray(pose.absolute.position, dtype=float)
     p_rel = np.asarray(pose.relative.position, dtype=float)
     return DualPose(
-        left=Pose(p_abs + 0.5 * p_rel, np.array(qf.positive(qf.mul(q_abs, half)))),
-        right=Pose(p_abs - 0.5 * p_rel, np.array(qf.positive(qf.mul(q_abs, qf.conj(half))))),
+        left=Pose(
+            p_abs + 0.5 * p_rel, np.array(qf.positive_floats(qf.multiply_floats(q_abs, half)))
+        ),
+        right=Pose(
+            p_abs - 0.5 * p_rel,
+            np.array(qf.positive_floats(qf.multiply_floats(q_abs, qf.conjugate_floats(half)))),
+        ),
     )
 
 
@@ -155,7 +160,7 @@ def relative_rotation_vector(pose: DualPose) -> FloatArray:
         expressed in the world frame, |phi| <= pi.  # (3,)
     """
     q_right, q_rel = _right_and_relative(pose)
-    return np.array(qf.rotate_v(q_right, qf.log_q(q_rel)))
+    return np.array(qf.rotate_floats(q_right, qf.log_floats(q_rel)))
 
 
 def absolute_rate_matrix(pose: DualPose) -> FloatArray:
@@ -175,15 +180,17 @@ def absolute_rate_matrix(pose: DualPose) -> FloatArray:
 
 def _right_and_relative(pose: DualPose) -> tuple[qf.Quat, qf.Quat]:
     """Q_right and Q_rel = Q_right^-1 Q_left (w >= 0) as float tuples."""
-    q_right = qf.quat(pose.right.orientation)
-    q_rel = qf.positive(qf.mul(qf.conj(q_right), qf.quat(pose.left.orientation)))
+    q_right = qf.quat_floats(pose.right.orientation)
+    q_rel = qf.positive_floats(
+        qf.multiply_floats(qf.conjugate_floats(q_right), qf.quat_floats(pose.left.orientation))
+    )
     return q_right, q_rel
 
 
 def _rate_coefficients(pose: DualPose) -> tuple[qf.Vec, float, float]:
     """Unit axis n of phi (world frame) and (a, b) with M = 1/2 (I + a K + b K^2), K = [n]x."""
     q_right, q_rel = _right_and_relative(pose)
-    px, py, pz = qf.rotate_v(q_right, qf.log_q(q_rel))
+    px, py, pz = qf.rotate_floats(q_right, qf.log_floats(q_rel))
     theta = math.sqrt(px * px + py * py + pz * pz)
     if theta == 0.0:
         return (1.0, 0.0, 0.0), 0.0, 0.0

@@ -1,14 +1,29 @@
-"""Quaternion helpers in the project's [w, x, y, z] convention.
+"""Quaternions in the project's [w, x, y, z] convention: the one module.
 
-SciPy's :class:`~scipy.spatial.transform.Rotation` is used for the algebra;
-its quaternions are [x, y, z, w], reordered here so that [w, x, y, z] is kept
-at every interface (not with ``scalar_first=True``: SciPy has it only since
-1.14, and the floor is 1.11).
+Three layers, each formula written once:
+
+- **The float fast path** (``*_floats``): Hamilton product, conjugate, sign
+  fix, square root, logarithm and vector rotation on tuples of plain
+  Python floats, for the task-space maps that run every 4 ms control
+  period. A NumPy call on a 4-vector costs about a microsecond;
+  ``bench/quaternion.py`` measures the fast path against the same formulas
+  on NumPy arrays.
+- **The array API** on NumPy 4-vectors (``multiply``, ``conjugate``,
+  ``quaternion_log``, ``quaternion_exp``, ``quaternion_sqrt``, ``rotate``,
+  ``orientation_along``, ...), the interface everywhere else; where a float
+  formula exists, the array function is it (the same operations in the
+  same order, so the same bits).
+- **SciPy**: :class:`~scipy.spatial.transform.Rotation` (interpolation)
+  through :func:`to_rotation` and :func:`from_rotation`. Its quaternions are
+  [x, y, z, w], reordered here so that [w, x, y, z] is kept at every
+  interface (not with ``scalar_first=True``: SciPy has it only since 1.14,
+  and the floor is 1.11).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -20,6 +35,94 @@ from tautwire.model.vector3 import cross3, norm3
 FloatArray = NDArray[np.float64]
 
 IDENTITY: FloatArray = np.array([1.0, 0.0, 0.0, 0.0])
+
+Quat = tuple[float, float, float, float]
+"""A quaternion [w, x, y, z] as plain floats (the fast path)."""
+Vec = tuple[float, float, float]
+"""A 3-vector as plain floats (the fast path)."""
+
+#: Below this |(x, y, z)| the logarithm uses its series (theta = 2 asin(s) ~ 2 s / w).
+_SMALL_ANGLE = 1e-6
+
+
+# ------------------------------------------------------------ float fast path
+
+
+def quat_floats(q: FloatArray | Sequence[float]) -> Quat:
+    """A quaternion [w, x, y, z] (array or sequence) as a tuple of floats."""
+    return (float(q[0]), float(q[1]), float(q[2]), float(q[3]))
+
+
+def vec_floats(v: FloatArray | Sequence[float]) -> Vec:
+    """A 3-vector (array or sequence) as a tuple of floats."""
+    return (float(v[0]), float(v[1]), float(v[2]))
+
+
+def multiply_floats(a: Quat, b: Quat) -> Quat:
+    """Hamilton product a b."""
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return (
+        aw * bw - ax * bx - ay * by - az * bz,
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+    )
+
+
+def conjugate_floats(q: Quat) -> Quat:
+    """Conjugate [w, -x, -y, -z] (the inverse of a unit quaternion)."""
+    return (q[0], -q[1], -q[2], -q[3])
+
+
+def positive_floats(q: Quat) -> Quat:
+    """The sign of q with w >= 0, renormalised to unit length."""
+    w, x, y, z = q
+    n = math.sqrt(w * w + x * x + y * y + z * z)
+    if w < 0.0:
+        n = -n
+    return (w / n, x / n, y / n, z / n)
+
+
+def sqrt_floats(q: Quat) -> Quat:
+    """Half the rotation of the unit quaternion q, along the shortest arc (w > 0)."""
+    w, x, y, z = q
+    if w < 0.0:
+        w, x, y, z = -w, -x, -y, -z
+    # half-angle formula: cos(theta/4) = sqrt((1 + cos(theta/2)) / 2)
+    c = math.sqrt(max(0.5 * (1.0 + w), 0.0))
+    s = 0.5 / c  # sin(theta/2) / sin(theta/4) = 2 cos(theta/4)
+    return (c, s * x, s * y, s * z)
+
+
+def log_floats(q: Quat) -> Vec:
+    """Rotation vector [rad] of the unit quaternion q (shortest, |phi| <= pi)."""
+    w, x, y, z = q
+    if w < 0.0:
+        w, x, y, z = -w, -x, -y, -z
+    s = math.sqrt(x * x + y * y + z * z)
+    if s < _SMALL_ANGLE:
+        scale = 2.0 / w if w > 0.0 else 0.0  # theta = 2 asin(s) ~ 2 s / w
+        return (scale * x, scale * y, scale * z)
+    scale = 2.0 * math.atan2(s, w) / s
+    return (scale * x, scale * y, scale * z)
+
+
+def rotate_floats(q: Quat, v: Vec) -> Vec:
+    """R(q) v for a unit quaternion q: v + 2 w (u x v) + 2 u x (u x v)."""
+    w, ux, uy, uz = q
+    vx, vy, vz = v
+    tx = 2.0 * (uy * vz - uz * vy)
+    ty = 2.0 * (uz * vx - ux * vz)
+    tz = 2.0 * (ux * vy - uy * vx)
+    return (
+        vx + w * tx + (uy * tz - uz * ty),
+        vy + w * ty + (uz * tx - ux * tz),
+        vz + w * tz + (ux * ty - uy * tx),
+    )
+
+
+# ------------------------------------------------------------------ array API
 
 
 def as_quaternion(q: ArrayLike) -> FloatArray:
@@ -52,22 +155,58 @@ def from_rotation(rotation: Rotation) -> FloatArray:
 
 def multiply(q1: ArrayLike, q2: ArrayLike) -> FloatArray:
     """Hamilton product ``q1 q2`` of two [w, x, y, z] quaternions."""
-    w1, x1, y1, z1 = np.asarray(q1, dtype=float)
-    w2, x2, y2, z2 = np.asarray(q2, dtype=float)
-    return np.array(
-        [
-            w1 * w2 - x1 * x2 - y1 * y2 - z1 * z2,
-            w1 * x2 + x1 * w2 + y1 * z2 - z1 * y2,
-            w1 * y2 - x1 * z2 + y1 * w2 + z1 * x2,
-            w1 * z2 + x1 * y2 - y1 * x2 + z1 * w2,
-        ]
-    )
+    a = np.asarray(q1, dtype=float).reshape(4)
+    b = np.asarray(q2, dtype=float).reshape(4)
+    return np.array(multiply_floats(quat_floats(a), quat_floats(b)))
 
 
 def conjugate(q: ArrayLike) -> FloatArray:
     """Conjugate (the inverse of a unit quaternion) [w, -x, -y, -z]."""
     arr = np.asarray(q, dtype=float)
     return np.array([arr[0], -arr[1], -arr[2], -arr[3]])
+
+
+def quaternion_log(q: ArrayLike) -> FloatArray:
+    """Rotation vector phi [rad] of the unit quaternion ``q`` = [w, x, y, z].
+
+    The sign of ``q`` is chosen so that w >= 0: the result is the shortest
+    rotation, |phi| <= pi.
+
+    Args:
+        q: Unit quaternion [w, x, y, z].  # (4,)
+
+    Returns:
+        Rotation vector (axis times angle) [rad].  # (3,)
+    """
+    return np.array(log_floats(quat_floats(np.asarray(q, dtype=float).reshape(4))))
+
+
+def quaternion_exp(phi: ArrayLike) -> FloatArray:
+    """Unit quaternion [w, x, y, z] of the rotation vector ``phi`` [rad].
+
+    Args:
+        phi: Rotation vector (axis times angle) [rad].  # (3,)
+
+    Returns:
+        Unit quaternion [w, x, y, z].  # (4,)
+    """
+    px, py, pz = vec_floats(np.asarray(phi, dtype=float).reshape(3))
+    theta = math.sqrt(px * px + py * py + pz * pz)
+    # sin(theta/2)/theta, by its series near 0
+    half = 0.5 - theta * theta / 48.0 if theta < _SMALL_ANGLE else math.sin(0.5 * theta) / theta
+    return np.array([math.cos(0.5 * theta), half * px, half * py, half * pz])
+
+
+def quaternion_sqrt(q: ArrayLike) -> FloatArray:
+    """Square root ``q^(1/2)`` along the shortest arc (half the rotation).
+
+    Args:
+        q: Unit quaternion [w, x, y, z].  # (4,)
+
+    Returns:
+        Unit quaternion [w, x, y, z] with w > 0 whose square is +-q.  # (4,)
+    """
+    return np.array(sqrt_floats(quat_floats(np.asarray(q, dtype=float).reshape(4))))
 
 
 def rotate(q: ArrayLike, v: ArrayLike) -> FloatArray:
