@@ -51,7 +51,7 @@ def test_an_unexpected_exception_is_one_line_and_status_70(
     assert status == INTERNAL_ERROR == 70
     assert captured.out == ""
     lines = captured.err.strip().splitlines()
-    assert lines == ["tautwire: internal error: RuntimeError: something unforeseen"]
+    assert lines == ["tautwire: error: internal error: RuntimeError: something unforeseen"]
 
 
 def test_a_stiffness_that_was_not_estimated_is_a_dash() -> None:

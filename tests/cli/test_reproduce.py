@@ -25,6 +25,8 @@ def test_fig5b_files_and_convergence(tmp_path) -> None:  # type: ignore[no-untyp
     from tautwire.experiments.fig5bc import reproduce_fig5b
 
     result = reproduce_fig5b(tmp_path)
+    text = _table_text("fig5b", result)
+    assert f"{1e3 * result['final_error']:.2f}" in text and "final contact error [mm]" in text
     assert 110 <= result["iterations"] <= 140  # about 125 iterations a circle
     assert result["final_error"] < 0.002
     assert result["run"]["success"]
@@ -108,6 +110,8 @@ def test_fig5c_contact_change_goals(tmp_path) -> None:  # type: ignore[no-untype
     from tautwire.experiments.fig5bc import reproduce_fig5c
 
     r = reproduce_fig5c(tmp_path)
+    text = _table_text("fig5c", r)
+    assert f"{1e3 * r['peak_error_after_change']:.2f}" in text and "0 false success(es)" in text
     assert r["error_half_circle"] <= 0.002
     assert len(r["declared_changes"]) == 1  # no spurious second change
     assert 0 <= r["change_declared_after"] <= 5
@@ -177,3 +181,35 @@ def test_robustness_bad_arguments_are_one_line(
     assert main(["reproduce", *args]) == status
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and words in err[0]
+
+
+def _table_text(name: str, result: dict) -> str:  # type: ignore[type-arg]
+    """What ``tautwire reproduce NAME`` prints without --json (a rich table)."""
+    from rich.console import Console
+
+    from tautwire.cli.reproduce import FIGURE_TABLES
+
+    console = Console(record=True, width=160)
+    console.print(FIGURE_TABLES[name](result))
+    return console.export_text()
+
+
+def test_fig5a_prints_a_table_in_newtons_not_json() -> None:
+    case = {
+        "stiffness": 100.0,
+        "controller": "adaptive",
+        "tracking_rms_error": 0.0123,
+        "hold_rms_error": None,
+        "tension_rms_error": 0.4567,
+        "max_force": 3.21,
+        "k_hat_final": 98.76,
+        "learn_time": 1.5,
+        "outcome": "success",
+    }
+    result = {"set_point": 3.0, "settle": 1.0, "cases": [case], "baseline": []}
+    text = _table_text("fig5a", result)
+    assert "tracking RMS [N]" in text and "k_hat [N/m]" in text
+    row = next(line for line in text.splitlines() if "adaptive" in line)
+    cells = [c.strip() for c in row.split("│")[1:-1]]
+    assert cells == ["100", "adaptive", "0.012", "-", "0.457", "3.21", "98.8", "1.50", "success"]
+    assert "{" not in text  # not JSON

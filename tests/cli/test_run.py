@@ -37,7 +37,8 @@ def test_run_bad_scenario_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixt
     bad.write_text("version: 1\nname: x\nrobot: 3\n")
     assert main(["run", str(bad)]) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "bad.yaml" in err[0]
+    # one line per problem: board and cables are missing, robot is not a mapping
+    assert len(err) == 3 and all(e.startswith(f"tautwire: error: {bad}:") for e in err)
 
 
 TENSION_ONLY = """\

@@ -55,7 +55,35 @@ def _summary(path: str, result: OfflineEstimate) -> str:
     return "\n".join(lines)
 
 
-@click.command("estimate")
+EPILOG = """\b
+The force log (CSV, UTF-8, comma-separated, one header line, any column order):
+  t,px,py,pz,fx,fy,fz          required
+    t           time [s], strictly increasing
+    px,py,pz    gripper position [m], world frame
+    fx,fy,fz    force [N] that the cable exerts on the gripper, world frame,
+                sensor bias removed (|f| > 0: a taut cable)
+  qw,qx,qy,qz  optional: gripper orientation, quaternion [w, x, y, z]
+  tx,ty,tz     optional: torque [N m] about the logged gripper point, world
+               frame (each row is then the wrench's line of action)
+Numbers are decimal (0.25, -1.5e-3; not 1_0, nan or inf); blank lines are
+skipped. A bad file exits 1 with one line naming the file, the line and
+the column. `tautwire run SCENARIO --out DIR` writes DIR/force_log.csv.
+
+\b
+Example log:
+  t,px,py,pz,fx,fy,fz
+  0.000,0.300,0.000,0.120,-3.98,0.02,-0.31
+  0.004,0.300,0.002,0.120,-3.97,-0.01,-0.30
+
+\b
+Examples:
+  tautwire estimate out/run/force_log.csv
+  tautwire estimate log.csv --json > estimate.json
+  tautwire estimate log.csv --mass-per-length 0.03 --force-noise 0.1
+"""
+
+
+@click.command("estimate", epilog=EPILOG)
 @click.argument("log", metavar="LOG.csv")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
 @click.option(

@@ -32,7 +32,11 @@ def plan_to_json(name: str, plan: Plan) -> dict[str, Any]:
     }
 
 
-@click.command("plan")
+@click.command(
+    "plan",
+    epilog="\b\nExamples:\n  tautwire plan harness.yaml           # a task: list to paste\n"
+    "  tautwire plan my-board.yaml --json\n",
+)
 @click.argument("scenario", type=click.Path(dir_okay=False, path_type=str))
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
 def plan(scenario: str, as_json: bool) -> int:

@@ -60,7 +60,22 @@ REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
 }
 
 
-@click.command()
+EPILOG = """\b
+Examples:
+  tautwire reproduce fig5a                      # Fig. 5a: a table in N, fig5a.png under out/fig5a/
+  tautwire reproduce fig5c --out out/c --json   # one JSON object on stdout
+  tautwire reproduce table1 --trials 20 --workers 2
+  tautwire reproduce table1 --resume            # finish an interrupted campaign
+  tautwire reproduce table1 --only D:17         # rerun one trial and print it
+  tautwire reproduce robustness --trials 40 --no-faults
+
+\b
+Without --json, a table (lengths in mm, forces in N) on stdout and the
+files under --out; a campaign shows a progress bar on stderr.
+"""
+
+
+@click.command(epilog=EPILOG)
 @click.argument("name")
 @click.option(
     "--out",
@@ -204,9 +219,114 @@ def reproduce(
     if as_json:
         click.echo(json.dumps(result, indent=2))
     else:
-        Console().print_json(json.dumps(result))
-        Console().print(f"written under {out}/")
+        Console().print(FIGURE_TABLES[name](result))
+        Console().print(f"written under {out}/ (the figure, its data as CSV, {name}.json)")
     return 0
+
+
+def _mm(metres: float | None) -> str:
+    """A length [m] in mm, or "-"."""
+    return "-" if metres is None else f"{1e3 * metres:.2f}"
+
+
+def _num(value: float | None, digits: int = 3) -> str:
+    """A number, or "-"."""
+    return "-" if value is None else f"{value:.{digits}f}"
+
+
+def _run_caption(run: dict[str, Any]) -> str:
+    """The simulated run's outcome under a figure's table."""
+    outcome = "success" if run.get("success") else "failure"
+    false = run.get("false_successes") or []
+    force = run.get("true_max_force")
+    parts = [f"run: {outcome}", f"{len(false)} false success(es)"]
+    if force is not None:
+        parts.append(f"true max force {force:.2f} N")
+    return ", ".join(parts)
+
+
+def fig5a_table(result: dict[str, Any]) -> Table:
+    """Fig. 5a's cases as a table: tension errors [N] and k_hat [N/m] per stiffness."""
+    table = Table(
+        title=f"Fig. 5a: primitive D at {result['set_point']:g} N, k unknown "
+        f"(errors after {result['settle']:g} s)"
+    )
+    for column in (
+        "k [N/m]",
+        "controller",
+        "tracking RMS [N]",
+        "hold RMS [N]",
+        "tension RMS [N]",
+        "max force [N]",
+        "k_hat [N/m]",
+        "learning [s]",
+        "outcome",
+    ):
+        table.add_column(column, justify="left" if column in ("controller", "outcome") else "right")
+    for case in [*result["cases"], *result["baseline"]]:
+        table.add_row(
+            f"{case['stiffness']:g}",
+            case["controller"],
+            _num(case["tracking_rms_error"]),
+            _num(case["hold_rms_error"]),
+            _num(case["tension_rms_error"]),
+            _num(case["max_force"], 2),
+            _num(case["k_hat_final"], 1),
+            _num(case["learn_time"], 2),
+            case["outcome"],
+        )
+    return table
+
+
+def fig5b_table(result: dict[str, Any]) -> Table:
+    """Fig. 5b's figures as a table: the contact error and std [mm] after the rotation."""
+    table = Table(title="Fig. 5b: contact estimation while rotating about an anchor")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    std = result["final_std"]
+    rows = [
+        ("filter iterations", str(result["iterations"])),
+        ("iterations per circle", str(result["iterations_per_circle"])),
+        ("estimation period [s]", _num(result["estimation_period"])),
+        ("final contact error [mm]", _mm(result["final_error"])),
+        ("final std x, y, z [mm]", "-" if std is None else ", ".join(_mm(v) for v in std)),
+        ("corr(speed x, decrease of std x)", _num(result["corr_speed_x_vs_std_x_decrease"], 2)),
+    ]
+    for row in rows:
+        table.add_row(*row)
+    table.caption = _run_caption(result["run"])
+    return table
+
+
+def fig5c_table(result: dict[str, Any]) -> Table:
+    """Fig. 5c's figures as a table: the contact change and the errors [mm] around it."""
+    table = Table(title="Fig. 5c: contact estimation through a change of contact")
+    table.add_column("quantity")
+    table.add_column("value", justify="right")
+    declared = result["declared_changes"]
+    rows = [
+        ("contact error half a circle in [mm]", _mm(result["error_half_circle"])),
+        ("true change at iteration", str(result["true_change_iteration"])),
+        ("declared changes at iterations", ", ".join(map(str, declared)) or "none"),
+        ("declared after the true change [iterations]", str(result["change_declared_after"])),
+        ("peak error after the true change [mm]", _mm(result["peak_error_after_change"])),
+        ("peak error after the declared change [mm]", _mm(result["peak_error_after_declared"])),
+        ("iterations to <= 2 mm after the change", str(result["samples_to_2mm_after_change"])),
+        ("final contact error [mm]", _mm(result["final_error"])),
+        ("final fixture", str(result["final_fixture"])),
+    ]
+    for row in rows:
+        table.add_row(*row)
+    table.caption = _run_caption(result["run"])
+    return table
+
+
+#: The table printed (without ``--json``) for each figure.
+FIGURE_TABLES: dict[str, Callable[[dict[str, Any]], Table]] = {
+    "fig5a": fig5a_table,
+    "fig5b": fig5b_table,
+    "fig5c": fig5c_table,
+}
 
 
 def _table1(
@@ -265,7 +385,7 @@ def _table1(
         Console().print(f"written under {out}/")
     if report["interrupted"]:
         click.echo(
-            f"tautwire: interrupted: {report['finished']} of {report['planned']} trials "
+            f"tautwire: error: interrupted: {report['finished']} of {report['planned']} trials "
             f"finished; their results are written under {out}/",
             err=True,
         )
@@ -328,7 +448,7 @@ def _robustness(
         Console().print(f"written under {out}/")
     if report["interrupted"]:
         click.echo(
-            f"tautwire: interrupted: {report['finished']} of {report['planned']} trials "
+            f"tautwire: error: interrupted: {report['finished']} of {report['planned']} trials "
             f"finished; their results are written under {out}/",
             err=True,
         )

@@ -9,7 +9,11 @@ import click
 from tautwire.scenario.registry import registered_scenarios
 
 
-@click.command("scenarios")
+@click.command(
+    "scenarios",
+    epilog="\b\nExamples:\n  tautwire scenarios\n  tautwire scenarios --json\n"
+    "  tautwire run peg-change       # run one by its name\n",
+)
 @click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
 def scenarios(as_json: bool) -> int:
     """List the shipped scenarios, one line each: name and what it shows.

@@ -10,7 +10,7 @@ from tautwire.scenario.registry import resolve_scenario
 
 
 @click.command(
-    epilog="""\\b
+    epilog="""\b
 Examples:
   tautwire view peg-change                  # real time; close the window to quit
   tautwire view my-board.yaml --speed 0.5   # half speed
