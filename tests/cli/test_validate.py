@@ -141,3 +141,13 @@ def test_a_huge_file_is_one_line_and_status_1(
     assert main(["validate", str(path)]) == 1
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "19,000,000 bytes is larger than 1,000,000" in err
+
+
+def test_a_world_that_diverges_while_it_settles_is_an_error(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path, _ = _edited(tmp_path, "stiffness: 200.0", "stiffness: 1.0e9")  # a number, not text
+    assert main(["validate", str(path)]) == 1
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1  # MuJoCo's own warnings are kept off the terminal
+    assert "not simulable: the simulation diverged" in err
