@@ -98,4 +98,5 @@ def test_a_control_character_is_named_with_line_and_column(char: str) -> None:
 
 def test_syntax_errors_have_line_and_column() -> None:
     err = problem("a: [1,\nb: 2\n")
-    assert err.line is not None and err.message.startswith("invalid YAML: ")
+    assert (err.line, err.column) == (3, 1)  # the end of the text, where the list is unclosed
+    assert err.message.startswith("invalid YAML at column 1: ")

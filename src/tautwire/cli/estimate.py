@@ -85,7 +85,7 @@ Examples:
 
 @click.command("estimate", epilog=EPILOG)
 @click.argument("log", metavar="LOG.csv")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
 @click.option(
     "--mass-per-length",
     "mass_per_length",
@@ -93,7 +93,7 @@ Examples:
     default=0.0,
     show_default=True,
     metavar="RHO",
-    help="Cable mass per length [kg/m] for weight compensation (0 = off).",
+    help="cable mass per length [kg/m] for weight compensation (0 = off)",
 )
 @click.option(
     "--process-noise",
@@ -101,7 +101,7 @@ Examples:
     default=DEFAULT_PROCESS_NOISE,
     show_default=True,
     metavar="Q",
-    help="Kalman process noise [m^2 per sample, per axis].",
+    help="Kalman process noise [m^2 per sample, per axis]",
 )
 @click.option(
     "--force-noise",
@@ -109,7 +109,7 @@ Examples:
     default=0.05,
     show_default=True,
     metavar="SIGMA",
-    help="Force sensor noise [N], std per axis.",
+    help="force sensor noise [N], std per axis",
 )
 @click.option(
     "--torque-noise",
@@ -117,14 +117,14 @@ Examples:
     default=0.002,
     show_default=True,
     metavar="SIGMA",
-    help="Torque sensor noise [N m], std per axis (used when the log has tx,ty,tz).",
+    help="torque sensor noise [N m], std per axis (used when the log has tx,ty,tz)",
 )
 @click.option(
     "--edge-length",
     type=float,
     default=None,
     metavar="D",
-    help="Known gripper-contact cable length [m] (default: from the estimate).",
+    help="known gripper-contact cable length [m] (default: from the estimate)",
 )
 def estimate(
     log: str,

@@ -38,7 +38,7 @@ def plan_to_json(name: str, plan: Plan) -> dict[str, Any]:
     "  tautwire plan my-board.yaml --json\n",
 )
 @click.argument("scenario", type=click.Path(dir_okay=False, path_type=str))
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object on stdout.")
+@click.option("--json", "as_json", is_flag=True, help="print one JSON object on stdout")
 def plan(scenario: str, as_json: bool) -> int:
     """Plan the routes of SCENARIO's cables; print the task.
 

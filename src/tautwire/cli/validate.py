@@ -106,7 +106,7 @@ expected). Exit status 0 if valid, 1 otherwise.
     "--json",
     "as_json",
     is_flag=True,
-    help="Print one JSON object on stdout: valid, problems, and the scenario as read.",
+    help="print one JSON object on stdout: valid, problems, and the scenario as read",
 )
 def validate(scenario: str, as_json: bool) -> int:
     """Check the scenario SCENARIO (a file, or a registered name); summarise it if valid.

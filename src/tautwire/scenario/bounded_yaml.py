@@ -150,7 +150,8 @@ def _marked(exc: yaml.MarkedYAMLError) -> YamlError:
         problem = f"{exc.problem} ({exc.context})"
     line = None if mark is None else mark.line + 1
     column = None if mark is None else mark.column + 1
-    return YamlError(line, column, f"invalid YAML: {problem}")
+    where = "" if column is None else f" at column {column}"
+    return YamlError(line, column, f"invalid YAML{where}: {problem}")
 
 
 def read_bounded(text: str) -> Document:
