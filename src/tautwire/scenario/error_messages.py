@@ -6,11 +6,9 @@ expectation carries the field's unit where the schema gives one.
 
 from __future__ import annotations
 
-import difflib
 import re
 import types
 import typing
-from collections.abc import Sequence
 from typing import Any, Literal, Union, get_args, get_origin
 
 from pydantic import BaseModel
@@ -18,6 +16,7 @@ from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from tautwire.scenario.issue import LOCATION_KEY, MORE_KEY, Location
+from tautwire.scenario.suggestion import did_you_mean
 from tautwire.scenario.value_text import show
 
 
@@ -85,6 +84,10 @@ def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location
         keys = ", ".join(model.model_fields) if model is not None else "keys"
         return location, f"got {got} (expected a mapping with {keys})"
     message = str(error["msg"])
+    if kind == "literal_error" and isinstance(error.get("input"), str):
+        choices = re.findall(r"'([^']*)'", str(ctx.get("expected", "")))
+        hint = did_you_mean(error.get("input"), choices)
+        return location, f"got {got}{hint} (expected {ctx.get('expected')}{unit})"
     if message.startswith("Value error, "):
         return location, message.removeprefix("Value error, ")
     if message.startswith("Input should be "):
@@ -95,21 +98,6 @@ def describe_error(root: type[BaseModel], error: ErrorDetails) -> tuple[Location
 
 
 _STEP_EXAMPLE = "{primitive: D, arm: left, force: 3.0}"
-
-
-def did_you_mean(given: object, choices: Sequence[str]) -> str:
-    """``", did you mean 'stiffness'?"`` for the choice closest to ``given``, or ``""``.
-
-    Args:
-        given: what the file says (a key or a tag).
-        choices: the valid names.
-    """
-    if not isinstance(given, str):
-        return ""
-    close = difflib.get_close_matches(given, list(choices), n=1, cutoff=0.6)
-    if not close:
-        close = [c for c in choices if c.lower() == given.lower()]
-    return f", did you mean {close[0]!r}?" if close else ""
 
 
 def _plain(expected: str) -> str:

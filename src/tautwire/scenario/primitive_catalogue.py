@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.scenario.suggestion import did_you_mean
 from tautwire.scenario.value_text import show
 
 ParamKind = Literal[
@@ -183,8 +184,9 @@ class PrimitiveSpec:
         names = ", ".join(p.name for p in self.parameters + STEP_PARAMETERS)
         for name in values:
             if self.parameter(name) is None:
+                hint = did_you_mean(name, [p.name for p in self.parameters + STEP_PARAMETERS])
                 raise ParameterError(
-                    name, f"unknown parameter of {self.name} (expected only: {names})"
+                    name, f"unknown parameter of {self.name}{hint} (expected only: {names})"
                 )
         given = [name for name in self.one_of if name in values]
         if self.one_of and len(given) != 1:
@@ -318,6 +320,7 @@ def find_primitive(name_or_letter: str) -> PrimitiveSpec:
     for spec in PRIMITIVES + MOVES:
         if name_or_letter == spec.name or (spec.letter and name_or_letter == spec.letter):
             return spec
+    hint = did_you_mean(name_or_letter, [p.name for p in PRIMITIVES + MOVES])
     raise InvalidArgumentError(
-        f"unknown primitive {name_or_letter!r} (expected one of: {primitive_choices()})"
+        f"unknown primitive {name_or_letter!r}{hint} (expected one of: {primitive_choices()})"
     )
