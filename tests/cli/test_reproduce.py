@@ -213,3 +213,18 @@ def test_fig5a_prints_a_table_in_newtons_not_json() -> None:
     cells = [c.strip() for c in row.split("│")[1:-1]]
     assert cells == ["100", "adaptive", "0.012", "-", "0.457", "3.21", "98.8", "1.50", "success"]
     assert "{" not in text  # not JSON
+
+
+def test_units_in_brackets_survive_rich_markup() -> None:
+    result = {
+        "iterations": 128,
+        "iterations_per_circle": 125,
+        "estimation_period": 0.04,
+        "final_error": 0.00067,
+        "final_std": [0.00025, 0.00027, 0.00021],
+        "corr_speed_x_vs_std_x_decrease": 0.5,
+        "run": {"success": True, "false_successes": [], "true_max_force": 3.5},
+    }
+    text = _table_text("fig5b", result)
+    assert "final contact error [mm]" in text and "estimation period [s]" in text
+    assert "0.67" in text and "0.25, 0.27, 0.21" in text

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import click
 from rich.console import Console
+from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
@@ -100,7 +101,7 @@ def demo(
     out = Console()
     steps = Table(title=f"{run['scenario']}: primitives run blind (seed {run['seed']})")
     for col in ("primitive", "outcome", "time [s]", "max force [N]"):
-        steps.add_column(col)
+        steps.add_column(escape(col))  # '[s]' is not rich markup
     for s in run["steps"]:
         steps.add_row(
             f"{s['letter']} {s['primitive']}",
@@ -111,7 +112,7 @@ def demo(
     out.print(steps)
     contacts = Table(title="Where the cable touches the board: estimate vs truth")
     for col in ("fixture", "estimate [m]", "error", "std [mm]"):
-        contacts.add_column(col)
+        contacts.add_column(escape(col))
     for c in run["contacts"]:
         contacts.add_row(
             c["fixture"],

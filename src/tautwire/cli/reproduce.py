@@ -18,6 +18,7 @@ from rich.progress import (
     TimeRemainingColumn,
 )
 from rich.table import Table
+from rich.text import Text
 
 from tautwire.errors import InvalidArgumentError
 
@@ -224,6 +225,11 @@ def reproduce(
     return 0
 
 
+def _add_row(table: Table, *cells: str) -> None:
+    """A row of plain text (a unit such as [mm] is not read as rich markup)."""
+    table.add_row(*(Text(cell) for cell in cells))
+
+
 def _mm(metres: float | None) -> str:
     """A length [m] in mm, or "-"."""
     return "-" if metres is None else f"{1e3 * metres:.2f}"
@@ -248,8 +254,10 @@ def _run_caption(run: dict[str, Any]) -> str:
 def fig5a_table(result: dict[str, Any]) -> Table:
     """Fig. 5a's cases as a table: tension errors [N] and k_hat [N/m] per stiffness."""
     table = Table(
-        title=f"Fig. 5a: primitive D at {result['set_point']:g} N, k unknown "
-        f"(errors after {result['settle']:g} s)"
+        title=Text(
+            f"Fig. 5a: primitive D at {result['set_point']:g} N, k unknown "
+            f"(errors after {result['settle']:g} s)"
+        )
     )
     for column in (
         "k [N/m]",
@@ -262,9 +270,12 @@ def fig5a_table(result: dict[str, Any]) -> Table:
         "learning [s]",
         "outcome",
     ):
-        table.add_column(column, justify="left" if column in ("controller", "outcome") else "right")
+        table.add_column(
+            Text(column), justify="left" if column in ("controller", "outcome") else "right"
+        )
     for case in [*result["cases"], *result["baseline"]]:
-        table.add_row(
+        _add_row(
+            table,
             f"{case['stiffness']:g}",
             case["controller"],
             _num(case["tracking_rms_error"]),
@@ -280,9 +291,9 @@ def fig5a_table(result: dict[str, Any]) -> Table:
 
 def fig5b_table(result: dict[str, Any]) -> Table:
     """Fig. 5b's figures as a table: the contact error and std [mm] after the rotation."""
-    table = Table(title="Fig. 5b: contact estimation while rotating about an anchor")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
+    table = Table(title=Text("Fig. 5b: contact estimation while rotating about an anchor"))
+    table.add_column(Text("quantity"))
+    table.add_column(Text("value"), justify="right")
     std = result["final_std"]
     rows = [
         ("filter iterations", str(result["iterations"])),
@@ -293,16 +304,16 @@ def fig5b_table(result: dict[str, Any]) -> Table:
         ("corr(speed x, decrease of std x)", _num(result["corr_speed_x_vs_std_x_decrease"], 2)),
     ]
     for row in rows:
-        table.add_row(*row)
-    table.caption = _run_caption(result["run"])
+        table.add_row(*(Text(cell) for cell in row))
+    table.caption = Text(_run_caption(result["run"]))
     return table
 
 
 def fig5c_table(result: dict[str, Any]) -> Table:
     """Fig. 5c's figures as a table: the contact change and the errors [mm] around it."""
-    table = Table(title="Fig. 5c: contact estimation through a change of contact")
-    table.add_column("quantity")
-    table.add_column("value", justify="right")
+    table = Table(title=Text("Fig. 5c: contact estimation through a change of contact"))
+    table.add_column(Text("quantity"))
+    table.add_column(Text("value"), justify="right")
     declared = result["declared_changes"]
     rows = [
         ("contact error half a circle in [mm]", _mm(result["error_half_circle"])),
@@ -316,8 +327,8 @@ def fig5c_table(result: dict[str, Any]) -> Table:
         ("final fixture", str(result["final_fixture"])),
     ]
     for row in rows:
-        table.add_row(*row)
-    table.caption = _run_caption(result["run"])
+        table.add_row(*(Text(cell) for cell in row))
+    table.caption = Text(_run_caption(result["run"]))
     return table
 
 
@@ -459,8 +470,10 @@ def _robustness(
 def _robustness_table(report: dict[str, Any]) -> Table:
     """The robustness figures as a rich table: clean runs, fault runs, each fault type."""
     table = Table(
-        title=f"Robustness: {report['finished']} of {report['planned']} trials, "
-        f"{report['wall_time']:.1f} s on {report['workers']} workers ({report['backend']})"
+        title=Text(
+            f"Robustness: {report['finished']} of {report['planned']} trials, "
+            f"{report['wall_time']:.1f} s on {report['workers']} workers ({report['backend']})"
+        )
     )
     columns = (
         "runs",
@@ -475,7 +488,7 @@ def _robustness_table(report: dict[str, Any]) -> Table:
         "causes",
     )
     for column in columns:
-        table.add_column(column, justify="left" if column in ("runs", "causes") else "right")
+        table.add_column(Text(column), justify="left" if column in ("runs", "causes") else "right")
 
     def pct(x: float | None) -> str:
         return "-" if x is None else f"{100 * x:.0f} %"
@@ -486,7 +499,8 @@ def _robustness_table(report: dict[str, Any]) -> Table:
         rows += [(f"  {k}", f) for k, f in report["per_fault"].items()]
     for label, f in rows:
         median = f["contact_error"]["median"]
-        table.add_row(
+        _add_row(
+            table,
             label,
             str(f["runs"]),
             pct(f["success_rate"]),
@@ -533,16 +547,21 @@ def _robustness_only(only: str, seed: int, as_json: bool, *, faults: bool) -> in
 def _table1_table(report: dict[str, Any]) -> Table:
     """The summary of a Table I report as a rich table."""
     table = Table(
-        title=f"Table I: {report['finished']} of {report['planned']} trials, "
-        f"{report['wall_time']:.1f} s on {report['workers']} workers ({report['backend']})"
+        title=Text(
+            f"Table I: {report['finished']} of {report['planned']} trials, "
+            f"{report['wall_time']:.1f} s on {report['workers']} workers ({report['backend']})"
+        )
     )
     for column in ("primitive", "trials", "failed", "causes", "max force [N]", "paper"):
-        table.add_column(column, justify="left" if column in ("primitive", "causes") else "right")
+        table.add_column(
+            Text(column), justify="left" if column in ("primitive", "causes") else "right"
+        )
     total = {"name": "Total", "letter": "", **report["total"]}
     for row in [*report["primitives"], total]:
         causes = ", ".join(f"{c} {n}" for c, n in row["causes"].items()) or "-"
         force = "-" if row["max_force"] is None else f"{row['max_force']:.1f}"
-        table.add_row(
+        _add_row(
+            table,
             f"{row['letter']} {row['name']}".strip(),
             str(row["trials"]),
             str(row["failures"]),

@@ -18,6 +18,7 @@ from typing import Any
 
 import click
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from tautwire.scenario import load_scenario
@@ -171,7 +172,7 @@ def run(
         return 0 if result.success else 1
     table = Table(title=f"{scenario.name} (seed {result.seed})")
     for col in ("step", "primitive", "outcome", "cause", "time [s]", "max force [N]"):
-        table.add_column(col)
+        table.add_column(escape(col))  # '[s]' is not rich markup
     for i, s in enumerate(result.steps):
         table.add_row(
             str(i + 1),
