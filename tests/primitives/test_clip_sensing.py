@@ -96,3 +96,40 @@ def test_planned_tension_is_the_preferred_one_or_within_bounds(
     if f != preferred:  # the preferred one fell short, and f presses at least as hard
         assert plan.press(preferred) < PRESS_MARGIN * push
         assert plan.press(f) >= min(PRESS_MARGIN * push, plan.press(preferred)) - 1e-9
+
+
+def _sense(p: np.ndarray, towards: np.ndarray) -> ClipHeight:
+    sensing = ClipHeight(np.zeros(3), np.array([1.0, 0.0, 0.0]), 0.006)
+    d = (towards - p) / np.linalg.norm(towards - p)
+    for k in range(50):
+        sensing.update(0.004 * k, p, d, True)
+    return sensing
+
+
+def test_a_line_far_below_the_seat_is_not_seated() -> None:
+    # the case: the cable pushed down 15 mm below the seat, beside the clip
+    sensing = _sense(np.array([0.056, 0.0, -0.05]), np.array([0.006, 0.0, -0.015]))
+    assert sensing.height == pytest.approx(-0.015, abs=1e-6)
+    assert not sensing.seated
+    assert sensing.verdict("C1").cause == "not_clipped"
+
+
+def test_a_line_beside_the_slot_is_not_seated() -> None:
+    sensing = _sense(np.array([0.056, 0.0, -0.05]), np.array([0.006, 0.012, 0.0]))
+    assert abs(sensing.height or 1.0) < 0.004  # at the seat's height, but beside it
+    assert sensing.miss == pytest.approx(0.012, rel=0.05)
+    assert not sensing.seated
+    within = _sense(np.array([0.056, 0.0, -0.05]), np.array([0.006, 0.003, 0.001]))
+    assert within.seated and within.verdict("C1").status == "success"
+
+
+@given(st.floats(-0.5, 0.5), st.floats(0.02, 0.2))
+def test_the_miss_is_the_horizontal_distance_of_the_line_from_the_point(
+    angle: float, distance: float
+) -> None:
+    from tautwire.primitives.clip_sensing import miss_at_clip
+
+    p = np.array([distance, 0.0, 0.05])
+    d = np.array([-math.cos(angle), math.sin(angle), -0.3])
+    d /= np.linalg.norm(d)
+    assert miss_at_clip(p, d, np.zeros(3)) == pytest.approx(distance * abs(math.sin(angle)))

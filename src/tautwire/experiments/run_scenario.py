@@ -17,17 +17,29 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from tautwire.errors import TautwireError
-from tautwire.experiments.truth import RunAudit
+from tautwire.errors import InvalidArgumentError
+from tautwire.experiments.truth import (
+    PointDeviation,
+    RunAudit,
+    TruthCheck,
+    deviation_summary,
+    point_deviations,
+    route_truth,
+    shape_deviations,
+    true_contacts,
+)
 from tautwire.model import PathGraph
-from tautwire.primitives import PrimitiveContext, make_primitive
+from tautwire.primitives import PrimitiveContext
 from tautwire.scenario import Scenario
+from tautwire.scenario.models import TaskStep as ScenarioStep
 from tautwire.sim.build import build_world, robot_of, truth_of
 from tautwire.sim.ground_truth import GroundTruth, closest_on_polyline
 from tautwire.sim.world import SimWorld
-from tautwire.tasks import StepReport, TickRecord, run_step
-from tautwire.tasks.initial_model import initial_context
+from tautwire.tasks import StepReport, TickRecord
+from tautwire.tasks.cable_models import CableModels, StepModel
+from tautwire.tasks.initial_model import initial_models
 from tautwire.tasks.scenario_guard import scenario_guard
+from tautwire.tasks.task_runner import TaskHooks, TaskStep, run_task
 
 FloatArray = NDArray[np.float64]
 
@@ -61,12 +73,16 @@ class RunResult:
     false_successes: int = 0
     true_max_force: float = 0.0
     contact_consistency: dict[str, Any] = field(default_factory=dict)
+    cables: list[dict[str, Any]] = field(default_factory=list)
+    shape_error: dict[str, float] | None = None
     audit: RunAudit | None = field(default=None, repr=False)
+    models: CableModels | None = field(default=None, repr=False)
 
     def to_dict(self) -> dict[str, Any]:
-        """The result as JSON-ready data (without the ``audit``)."""
-        data = asdict(replace(self, audit=None))
+        """The result as JSON-ready data (without the ``audit`` and the ``models``)."""
+        data = asdict(replace(self, audit=None, models=None))
         data.pop("audit")
+        data.pop("models")
         return data
 
     def to_json(self) -> str:
@@ -81,15 +97,21 @@ def nearest_fixture(ctx: PrimitiveContext, point: FloatArray) -> str:
     return min(ctx.fixtures, key=lambda n: float(np.linalg.norm(ctx.fixtures[n] - point)))
 
 
-def score_contacts(ctx: PrimitiveContext, truth: GroundTruth) -> list[ContactScore]:
-    """Every estimated contact point of the model against the truth."""
+def score_contacts(
+    ctx: PrimitiveContext, truth: GroundTruth, cable: str | None = None
+) -> list[ContactScore]:
+    """Every estimated contact point of ``ctx``'s model (of ``cable``) against the truth."""
     scores = []
+    real = None if cable is None else true_contacts(truth, cable)
     for pt in ctx.graph.points:
         if pt.covariance is None or pt.kind not in ("contact", "fixed"):
             continue
         name = pt.label if pt.label in ctx.fixtures else nearest_fixture(ctx, pt.position)
-        true = truth.contact(name)
-        t = None if true is None else np.asarray(true.point, dtype=float)
+        if real is None:
+            true = truth.contact(name)
+            t = None if true is None else np.asarray(true.point, dtype=float)
+        else:
+            t = real.get(name)
         scores.append(
             ContactScore(
                 name,
@@ -103,7 +125,12 @@ def score_contacts(ctx: PrimitiveContext, truth: GroundTruth) -> list[ContactSco
 
 
 def model_error(graph: PathGraph, polyline: FloatArray) -> dict[str, float] | None:
-    """Horizontal and vertical deviation [m] of the model's constrained points from the cable."""
+    """Horizontal and vertical deviation [m] of the model's constrained points from the cable.
+
+    Each point against the nearest point of the true cable (the measure
+    before ``model_error`` scored each point against the true point it
+    stands for, :func:`~tautwire.experiments.truth.point_deviations`).
+    """
     horizontal, vertical = [], []
     for pt in graph.points:
         if not pt.is_constrained:
@@ -111,14 +138,91 @@ def model_error(graph: PathGraph, polyline: FloatArray) -> dict[str, float] | No
         d = pt.position - closest_on_polyline(polyline, pt.position)
         horizontal.append(float(np.hypot(d[0], d[1])))
         vertical.append(abs(float(d[2])))
-    if not horizontal:
-        return None
-    return {
-        "horizontal_mean": float(np.mean(horizontal)),
-        "horizontal_max": float(np.max(horizontal)),
-        "vertical_mean": float(np.mean(vertical)),
-        "vertical_max": float(np.max(vertical)),
-    }
+    return deviation_summary(horizontal, vertical)
+
+
+def task_of(scenario: Scenario) -> list[ScenarioStep]:
+    """The steps to run: the scenario's task, or, with routes and no task, the planner's.
+
+    Raises:
+        RouteError: a route the robot cannot do (one line: cable, entry, reason).
+    """
+    if scenario.task or not any(c.route for c in scenario.cables):
+        return list(scenario.task)
+    from tautwire.scenario.route_problem import plan_scenario
+
+    return [ScenarioStep.model_validate(step) for step in plan_scenario(scenario).task()]
+
+
+def routed(graph: PathGraph, route: list[tuple[str, str | None]]) -> bool:
+    """Whether the model passes the route's fixtures in order (a point named after each)."""
+    labels = [p.label for p in graph.points if p.kind in ("contact", "fixed")]
+    at = 0
+    for fixture, _ in route:
+        if fixture not in labels[at:]:
+            return False
+        at = labels.index(fixture, at) + 1
+    return True
+
+
+def score_cables(
+    scenario: Scenario,
+    models: CableModels,
+    truth: GroundTruth,
+    reports: list[StepReport],
+    complete: bool,
+) -> tuple[list[dict[str, Any]], dict[str, float] | None, dict[str, float] | None]:
+    """Per cable: stiffness, model_error, shape_error, route_done; and both errors over all.
+
+    ``route_done`` (a cable with a route; None without) is the robot's blind
+    claim: the whole task ran, every step on the cable succeeded and its
+    model passes the route's fixtures in order (:func:`routed`);
+    ``route_truth`` says whether the simulator shows the cable on its route.
+    """
+    cables: list[dict[str, Any]] = []
+    all_points: list[PointDeviation] = []
+    all_shape: list[FloatArray] = []
+    for spec in scenario.cables:
+        ctx = models.final(spec.name)
+        graph = models.graphs[spec.name]
+        points = point_deviations(graph, truth, spec.name)
+        shape = shape_deviations(graph, truth.polyline(spec.name))
+        all_points += points
+        all_shape.append(shape)
+        k_hat = None if ctx is None else ctx.estimator.elasticity.k_hat
+        own = [r for r in reports if r.cable == spec.name]
+        route: list[tuple[str, str | None]] = [(e.fixture, e.side) for e in spec.route]
+        entry: dict[str, Any] = {
+            "name": spec.name,
+            "stiffness": {
+                "estimate": float(k_hat) if k_hat is not None and math.isfinite(k_hat) else None,
+                "truth": truth.stiffness(spec.name),
+            },
+            "model_error": deviation_summary(
+                [p.horizontal for p in points], [p.vertical for p in points]
+            ),
+            "shape_error": deviation_summary(list(shape[:, 0]), list(shape[:, 1])),
+            "route_done": (complete and all(r.success for r in own) and routed(graph, route))
+            if route
+            else None,
+            "route_truth": route_truth(truth, spec.name, route).to_dict() if route else None,
+            "points": [
+                {
+                    "label": p.label,
+                    "stands_for": p.stands_for,
+                    "horizontal": p.horizontal,
+                    "vertical": p.vertical,
+                }
+                for p in points
+            ],
+        }
+        cables.append(entry)
+    shape_all = np.vstack(all_shape) if all_shape else np.zeros((0, 2))
+    return (
+        cables,
+        deviation_summary([p.horizontal for p in all_points], [p.vertical for p in all_points]),
+        deviation_summary(list(shape_all[:, 0]), list(shape_all[:, 1])),
+    )
 
 
 def run_scenario(
@@ -132,7 +236,7 @@ def run_scenario(
     on_world: Callable[[SimWorld], None] | None = None,
     **sim_options: Any,
 ) -> tuple[RunResult, PrimitiveContext, GroundTruth]:
-    """Simulate ``scenario``'s task and score it.
+    """Simulate ``scenario``'s task (planned from its routes if it has none) and score it.
 
     Args:
         scenario: A validated scenario.
@@ -146,10 +250,15 @@ def run_scenario(
         **sim_options: Options of the simulated world (see ``SimOptions``).
 
     Returns:
-        The result, the final context (model and estimators) and the truth.
+        The result, the final context of the first cable (its model and
+        estimators; every cable's is in ``result.models``) and the truth.
+
+    Raises:
+        RouteError: the scenario's routes cannot be planned.
     """
     t_wall = time.perf_counter()
     seed = scenario.seed if seed is None else seed
+    task = task_of(scenario)
     world = build_world(scenario, seed=seed, **sim_options)
     robot = scenario_guard(robot_of(world, seed, scenario.faults), scenario)  # once per run
     truth = truth_of(world)
@@ -157,35 +266,35 @@ def run_scenario(
         on_truth(truth)
     if on_world is not None:
         on_world(world)
-    ctx = initial_context(scenario, estimation_period=estimation_period)
-    cable = (scenario.cables[0]).name
-    audit = RunAudit(truth, cable, ctx.arm)
-    reports: list[StepReport] = []
-    for i, step in enumerate(scenario.task):
-        audit.start_step(step.letter, step.params)
+    models = initial_models(scenario, estimation_period=estimation_period)
+    first = scenario.cables[0].name
+    start = models.primary(first)
+    audit = RunAudit(truth, first, start.arm if start is not None else "left")
+    checks: list[TruthCheck] = []
 
-        def tick(record: TickRecord) -> None:
-            audit.tick(record.context)
-            if on_tick is not None:
-                on_tick(record)
+    def started(i: int, step: TaskStep, model: StepModel) -> None:
+        cable = model.cable if model.cable is not None else first
+        audit.start_step(step.letter, dict(step.params), cable, model.context.arm, step.primitive)
 
-        try:
-            primitive = make_primitive(step.primitive, **step.params)
-        except TautwireError as exc:
-            report = StepReport(step.primitive, step.letter, "failure", "error", str(exc), 0.0, 0.0)
+    def tick(record: TickRecord) -> None:
+        audit.tick(record.context)
+        if on_tick is not None:
+            on_tick(record)
+
+    def ended(i: int, step: TaskStep, model: StepModel | None, report: StepReport) -> None:
+        if model is None:
+            checks.append(TruthCheck(True, "the step did not run: " + report.detail))
         else:
-            report = run_step(robot, primitive, ctx, on_tick=tick)
-        audit.end_step(report.success, ctx)
-        reports.append(report)
+            checks.append(audit.end_step(report.success, model.context))
         if on_step is not None:
             on_step(i, report)
-        if not report.success:
-            break
-    success = (
-        len(reports) == len(scenario.task)
-        and all(r.success for r in reports)
-        and audit.false_successes == 0
+
+    reports = run_task(robot, task, models, TaskHooks(started, tick, ended))
+    false_successes = sum(
+        1 for r, c in zip(reports, checks, strict=True) if r.success and not c.agrees
     )
+    complete = len(reports) == len(task) and all(r.success for r in reports)
+    success = complete and false_successes == 0
     steps = [
         {
             "primitive": r.primitive,
@@ -195,31 +304,48 @@ def run_scenario(
             "detail": r.detail,
             "sim_time": r.sim_time,
             "max_force": r.max_force,
-            "cable": cable,
+            "cable": r.cable,
             "truth": check.to_dict(),
         }
-        for r, check in zip(reports, audit.checks, strict=True)
+        for r, check in zip(reports, checks, strict=True)
     ]
-    audit.finish(ctx)
+    ctx = models.final(first)
+    if ctx is None:  # no gripper with a sensor ever held the first cable
+        raise InvalidArgumentError(f"cable {first!r}: no gripper with a force sensor holds it")
+    audit.finish(ctx, models.graphs)
+    cables, model_all, shape_all = score_cables(scenario, models, truth, reports, complete)
+    # a route the model claims done that the simulator does not show makes no success
+    success = success and not any(
+        c["route_done"] and not c["route_truth"]["agrees"] for c in cables
+    )
     k_hat = ctx.estimator.elasticity.k_hat
+    contacts = [
+        score
+        for spec in scenario.cables
+        if (final := models.final(spec.name)) is not None
+        for score in score_contacts(final, truth, spec.name)
+    ]
     result = RunResult(
         scenario=scenario.name,
         seed=seed,
         success=success,
         steps=steps,
-        contacts=score_contacts(ctx, truth),
+        contacts=contacts,
         stiffness={
             "estimate": float(k_hat) if math.isfinite(k_hat) else None,
-            "truth": truth.stiffness(cable),
+            "truth": truth.stiffness(first),
         },
-        model_error=model_error(ctx.graph, truth.polyline(cable)),
+        model_error=model_all,
         max_force=max((r.max_force for r in reports), default=0.0),
         sim_time=sum(r.sim_time for r in reports),
         wall_time=time.perf_counter() - t_wall,
-        false_successes=audit.false_successes,
+        false_successes=false_successes,
         true_max_force=truth.max_force,
         contact_consistency=audit.consistency(),
         audit=audit,
+        cables=cables,
+        shape_error=shape_all,
+        models=models,
     )
     return result, ctx, truth
 

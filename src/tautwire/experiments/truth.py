@@ -64,7 +64,7 @@ reported std on every axis (per axis; :attr:`FilterSample.nees` gives the
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -74,7 +74,7 @@ from tautwire.model import PathGraph
 from tautwire.model.sag_length import sag_excess_length
 from tautwire.primitives import PrimitiveContext
 from tautwire.robot import Arm
-from tautwire.sim.ground_truth import GroundTruth, TautSpan
+from tautwire.sim.ground_truth import GroundTruth, TautSpan, closest_on_polyline
 
 FloatArray = NDArray[np.float64]
 
@@ -134,6 +134,7 @@ class ContactCheck:
         std: sqrt(diag(covariance)) [m], None for a design point without one.  # (3,)
         trusted: Whether the robot trusts the estimate (std at most trusted_std).
         reason: Why the point is made up ("" otherwise).
+        cable: The cable whose model holds the point ("" when not said).
     """
 
     label: str
@@ -146,6 +147,7 @@ class ContactCheck:
     std: FloatArray | None
     trusted: bool
     reason: str = ""
+    cable: str = ""
 
     @property
     def made_up(self) -> bool:
@@ -235,7 +237,7 @@ def check_contacts(
             checks[k] = _made_up(
                 points[k], trusted_std, f"the nearest free true contact is {where}"
             )
-    return [c for c in checks if c is not None]
+    return [replace(c, cable=cable) for c in checks if c is not None]
 
 
 def _std(covariance: FloatArray | None) -> FloatArray | None:
@@ -521,6 +523,7 @@ def check_step(
     watch: StepWatch,
     ctx: PrimitiveContext,
     truth: GroundTruth,
+    primitive: str = "",
 ) -> TruthCheck:
     """The truth of one finished step (see the module docstring).
 
@@ -531,9 +534,26 @@ def check_step(
         watch: The step's :class:`StepWatch`, finished.
         ctx: The primitives' context after the step (the model).
         truth: The simulator's truth.
+        primitive: The primitive's name (tells the moves ``move`` and
+            ``release`` apart).
     """
     parts: list[str] = []
     agrees = True
+    if primitive == "release":
+        held = truth.held(watch.arm)
+        ok = held is None
+        agrees &= ok
+        parts.append(
+            f"the {watch.arm} gripper truly "
+            + ("let go" if ok else f"still holds {held[0] if held else ''}")
+        )
+    if primitive == "move" and params.get("taut", True) and watch.span is not None:
+        ok = bool(watch.taut[-1]) if watch.taut else False
+        agrees &= ok
+        parts.append(
+            f"the cable is {'' if ok else 'not '}taut at the end of the move "
+            f"(true tension {watch.tensions[-1] if watch.tensions else 0.0:.2f} N)"
+        )
     if letter in TENSION_PRIMITIVES and "force" in params:
         ok, text = _tension_truth(float(params["force"]), watch)
         agrees &= ok
@@ -721,73 +741,114 @@ def coverage(samples: list[FilterSample]) -> tuple[int, float | None]:
 
 
 class RunAudit:
-    """The truth of a whole run: one :class:`StepWatch` per step, the filter's samples.
+    """The truth of a whole run: one :class:`StepWatch` per step, the filters' samples.
 
     ``run_scenario`` calls :meth:`start_step` before each step, :meth:`tick`
     every control period, :meth:`end_step` after the step and
-    :meth:`finish` after the last.
+    :meth:`finish` after the last. Each step is watched on its own cable and
+    gripper; each sensing context's contact filter has its own
+    :class:`FilterWatch`.
 
     Args:
         truth: The simulator's truth.
-        cable: The cable of the model.
-        arm: Its sensing gripper.
+        cable: The cable a step works on when it does not say (the first).
+        arm: The gripper a step watches when it does not say.
     """
 
     def __init__(self, truth: GroundTruth, cable: str, arm: Arm) -> None:
         self.truth = truth
         self.cable = cable
         self.arm: Arm = arm
-        self.filter = FilterWatch(truth, cable, arm)
+        #: One filter watch per (cable, sensing arm).
+        self.filters: dict[tuple[str, Arm], FilterWatch] = {}
         self.watches: list[StepWatch] = []
         self.checks: list[TruthCheck] = []
         self.successes: list[bool] = []
-        #: The final model's contact and fixed points against the truth.
+        #: The final models' contact and fixed points against the truth (all cables).
         self.contacts: list[ContactCheck] = []
-        self._step: tuple[str, dict[str, Any]] | None = None
+        self._step: tuple[str, dict[str, Any], str] | None = None
 
-    def start_step(self, letter: str, params: dict[str, Any]) -> StepWatch:
-        """Start watching a step of primitive ``letter`` with ``params``."""
-        arm = params.get("arm", self.arm)
+    @property
+    def filter(self) -> FilterWatch:
+        """The filter watch of the default cable's sensing gripper."""
+        return self._filter(self.cable, self.arm)
+
+    def _filter(self, cable: str, arm: Arm) -> FilterWatch:
+        key = (cable, arm)
+        if key not in self.filters:
+            self.filters[key] = FilterWatch(self.truth, cable, arm)
+        return self.filters[key]
+
+    def start_step(
+        self,
+        letter: str,
+        params: dict[str, Any],
+        cable: str | None = None,
+        arm: Arm | None = None,
+        primitive: str = "",
+    ) -> StepWatch:
+        """Start watching a step of primitive ``letter`` with ``params``.
+
+        Args:
+            letter: The primitive's letter ("" for a move).
+            params: Its parameters.
+            cable: The cable it works on (default the audit's).
+            arm: The gripper that senses it, watched when the step names
+                no arm (default the audit's).
+            primitive: The primitive's name.
+        """
+        default: Arm = self.arm if arm is None else arm
+        named = params.get("arm", default)
         axis = params.get("axis", (0.0, 0.0, 1.0)) if letter == "I" else None
+        watched: Arm = named if named in ("left", "right") else default
         watch = StepWatch(
             self.truth,
-            self.cable,
-            arm if arm in ("left", "right") else self.arm,
+            self.cable if cable is None else cable,
+            watched,
             None if axis is None else np.asarray(axis, dtype=float),
         )
         self.watches.append(watch)
-        self._step = (letter, dict(params))
+        self._step = (letter, dict(params), primitive)
         return watch
 
     def tick(self, ctx: PrimitiveContext) -> None:
         """Sample the truth after a control period (at the simulator's time)."""
         time = self.truth.time
-        ran = self.filter.ran(ctx)
+        cable = self.watches[-1].cable if self.watches else self.cable
+        watch_filter = self._filter(cable, ctx.arm)
+        ran = watch_filter.ran(ctx)
         if self.watches:
             watch = self.watches[-1]
             watch.tick(time, resample=ran)  # the filter's sample shares the span just taken
             if ran:
-                self.filter.tick(ctx, time, watch.span)
+                span = watch.span if watch.arm == ctx.arm else None
+                watch_filter.tick(ctx, time, span)
                 return
-        self.filter.tick(ctx, time)
+        watch_filter.tick(ctx, time)
 
     def end_step(self, success: bool, ctx: PrimitiveContext) -> TruthCheck:
-        """Check the step that just ended (it reported ``success``)."""
+        """Check the step that just ended (it reported ``success``) on its context ``ctx``."""
         assert self._step is not None, "end_step without start_step"
-        letter, params = self._step
+        letter, params, primitive = self._step
         watch = self.watches[-1]
         watch.finish()
         k_hat = ctx.estimator.elasticity.k_hat
         watch.k_hat = float(k_hat) if math.isfinite(k_hat) else None
-        check = check_step(letter, params, success, watch, ctx, self.truth)
+        check = check_step(letter, params, success, watch, ctx, self.truth, primitive)
         self.checks.append(check)
         self.successes.append(success)
         self._step = None
         return check
 
-    def finish(self, ctx: PrimitiveContext) -> None:
-        """Check the final model."""
-        self.contacts = check_contacts(ctx.graph, self.truth, self.cable, ctx.estimator.trusted_std)
+    def finish(self, ctx: PrimitiveContext, graphs: dict[str, PathGraph] | None = None) -> None:
+        """Check the final models: ``graphs`` by cable (default ``ctx``'s, the audit's cable)."""
+        models = {self.cable: ctx.graph} if graphs is None else graphs
+        trusted_std = ctx.estimator.trusted_std
+        self.contacts = [
+            c
+            for cable, graph in models.items()
+            for c in check_contacts(graph, self.truth, cable, trusted_std)
+        ]
 
     @property
     def false_successes(self) -> int:
@@ -798,8 +859,8 @@ class RunAudit:
 
     @property
     def samples(self) -> list[FilterSample]:
-        """The contact filter against the truth, one sample per iteration."""
-        return self.filter.samples
+        """The contact filters against the truth, one sample per iteration of each."""
+        return [s for w in self.filters.values() for s in w.samples]
 
     def consistency(self) -> dict[str, Any]:
         """The NEES coverage of the run: converged samples and the fraction within 3 std."""
@@ -810,3 +871,143 @@ class RunAudit:
             "definition": "contact filter iterations whose largest std is at most the "
             "estimator's trusted_std; error within 3 reported std on every axis",
         }
+
+
+# ------------------------------------------------------------- model scores
+
+#: Arc length [m] between two samples of a modelled cable (shape_error).
+SHAPE_STEP = 0.005
+
+
+@dataclass(frozen=True)
+class PointDeviation:
+    """One feature point of a model against the true point it stands for.
+
+    Attributes:
+        cable: The cable.
+        label: The point's label (a fixture's name, an arm, ``estimated``).
+        stands_for: What it stands for: a fixture's name or ``gripper <arm>``.
+        horizontal: Horizontal (x-y) distance [m] from the true point.
+        vertical: Vertical distance [m] from the true point.
+    """
+
+    cable: str
+    label: str
+    stands_for: str
+    horizontal: float
+    vertical: float
+
+
+def point_deviations(
+    graph: PathGraph, truth: GroundTruth, cable: str, trusted_std: float = 0.01
+) -> list[PointDeviation]:
+    """Each point of ``cable``'s model that stands for a fixture or a gripper, against it.
+
+    A gripper's point against its true tool centre point; a contact or
+    fixed point against the true contact of the fixture it stands for
+    (:func:`check_contacts`: an anchor, a clip's exit, a peg's axis point at
+    the cable's height). A made-up point stands for nothing and is left out
+    (the step's truth counts it).
+    """
+    out: list[PointDeviation] = []
+    for pt in graph.points:
+        if pt.kind == "gripper" and pt.label in ("left", "right"):
+            arm: Arm = "left" if pt.label == "left" else "right"
+            d = pt.position - truth.gripper_position(arm)
+            out.append(
+                PointDeviation(
+                    cable, pt.label, f"gripper {pt.label}", float(np.hypot(d[0], d[1])), abs(d[2])
+                )
+            )
+    for c in check_contacts(graph, truth, cable, trusted_std):
+        if c.made_up or c.truth is None or c.fixture is None:
+            continue
+        d = c.estimate - c.truth
+        out.append(
+            PointDeviation(cable, c.label, c.fixture, float(np.hypot(d[0], d[1])), abs(d[2]))
+        )
+    return out
+
+
+def model_samples(graph: PathGraph, step: float = SHAPE_STEP) -> FloatArray:
+    """The modelled cable sampled every ``step`` [m] of arc length, shape (K, 3).
+
+    Each edge is its chord lowered by its sag in a parabola
+    (equ:catenarySlack: 4 s t (1 - t) below the chord at fraction t of its
+    length): a taut edge (sag 0) is straight, a slack edge sags, a free end
+    hangs as the constraint map placed it.
+    """
+    samples: list[FloatArray] = [graph.points[0].position.copy()]
+    for i, edge in enumerate(graph.edges):
+        a, b = graph.points[i].position, graph.points[i + 1].position
+        n = max(1, math.ceil(edge.length / step))
+        for k in range(1, n + 1):
+            t = k / n
+            p = a + t * (b - a)
+            p[2] -= 4.0 * edge.sag * t * (1.0 - t)
+            samples.append(p)
+    return np.array(samples)
+
+
+def shape_deviations(graph: PathGraph, polyline: FloatArray) -> FloatArray:
+    """Horizontal and vertical distance [m] of each model sample from the true cable, (K, 2).
+
+    Each sample (:func:`model_samples`) against the nearest point of the
+    true cable's centre line.
+    """
+    rows = []
+    for p in model_samples(graph):
+        d = p - closest_on_polyline(polyline, p)
+        rows.append((float(np.hypot(d[0], d[1])), abs(float(d[2]))))
+    return np.array(rows).reshape(-1, 2)
+
+
+def deviation_summary(horizontal: list[float], vertical: list[float]) -> dict[str, float] | None:
+    """Mean and max [m] of horizontal and vertical deviations (None without any)."""
+    if not horizontal:
+        return None
+    return {
+        "horizontal_mean": float(np.mean(horizontal)),
+        "horizontal_max": float(np.max(horizontal)),
+        "vertical_mean": float(np.mean(vertical)),
+        "vertical_max": float(np.max(vertical)),
+    }
+
+
+def route_truth(truth: GroundTruth, cable: str, route: list[tuple[str, str | None]]) -> TruthCheck:
+    """Whether ``cable`` truly follows its target ``route``: (fixture, side) in order.
+
+    A clip holds the cable in its jaws (:meth:`GroundTruth.clipped`); the
+    cable touches a peg, and the peg lies on the route's side of it (seen
+    along the cable from its start, at the vertex nearest the peg's axis).
+    Windings are not counted.
+    """
+    parts: list[str] = []
+    agrees = True
+    touching = true_contacts(truth, cable)
+    pts = truth.polyline(cable)
+    for fixture, side in route:
+        kind = truth.fixture_type(fixture)
+        if kind == "clip":
+            ok = truth.clipped(fixture, cable)
+            parts.append(f"{fixture}: {'in' if ok else 'not in'} its jaws")
+        elif kind == "peg":
+            axis = touching.get(fixture)
+            if axis is None:
+                ok = False
+                parts.append(f"{fixture}: not touched")
+            else:
+                flat = pts[:, :2] - axis[:2]
+                i = int(np.argmin(np.hypot(flat[:, 0], flat[:, 1])))
+                lo, hi = max(i - 1, 0), min(i + 1, len(pts) - 1)
+                t = pts[hi] - pts[lo]
+                r = axis - pts[i]
+                cross = float(t[0] * r[1] - t[1] * r[0])
+                on = "left" if cross > 0.0 else "right"
+                ok = side is None or on == side
+                parts.append(f"{fixture}: touched, on the cable's {on}")
+        else:
+            ok = fixture in touching
+            parts.append(f"{fixture}: {'holds' if ok else 'does not hold'} the cable")
+        agrees &= ok
+    return TruthCheck(agrees, "; ".join(parts) if parts else "no route")

@@ -22,8 +22,15 @@ from tautwire.primitives.outcome import Outcome
 
 FloatArray = NDArray[np.float64]
 
-#: The cable counts as seated within this height [m] above the seat.
+#: The cable counts as seated within this height [m] above the seat ...
 SEATED = 0.004
+#: ... no further than this [m] below it (a line that passes lower ran beside
+#: the clip, down past its walls, not through its channel) ...
+SEATED_BELOW = 0.004
+#: ... and with its line passing the slot's exit within this distance [m]
+#: across it (the channel's half width, about the cable's radius, plus the
+#: line's noise: a cable beside the channel bends past the clip, not at it).
+SIDEWAYS = 0.005
 
 
 def height_at_clip(p_gripper: FloatArray, direction: FloatArray, seat: FloatArray) -> float | None:
@@ -47,6 +54,27 @@ def height_at_clip(p_gripper: FloatArray, direction: FloatArray, seat: FloatArra
     if lam <= 0.0:
         return None
     return float(p_gripper[2] + lam * float(direction[2]))
+
+
+def miss_at_clip(p_gripper: FloatArray, direction: FloatArray, point: FloatArray) -> float | None:
+    """Horizontal distance [m] by which the tension line misses ``point``'s vertical.
+
+    Args:
+        p_gripper: Gripper position [m].  # (3,)
+        direction: Unit tension direction from the gripper.  # (3,)
+        point: The point [m] (a clip's exit).  # (3,)
+
+    Returns:
+        The distance, or None where :func:`height_at_clip` has no height.
+    """
+    dx, dy = float(direction[0]), float(direction[1])
+    n2 = dx * dx + dy * dy
+    if n2 < 1e-6:
+        return None
+    rx, ry = float(point[0] - p_gripper[0]), float(point[1] - p_gripper[1])
+    if rx * dx + ry * dy <= 0.0:
+        return None
+    return abs(rx * dy - ry * dx) / math.sqrt(n2)
 
 
 def push_tension(push_force: float, tension: float | None, force_limit: float) -> float:
@@ -123,12 +151,15 @@ class PivotPress:
 
 
 class ClipHeight:
-    """Low-passed height of the cable at a clip, from the measured force.
+    """Low-passed height of the cable at a clip, and how far beside it, from the measured force.
 
     The cable pulled down towards the gripper bends where it leaves the
     clip, at the end of the slot on the gripper's side: the height is taken
     there (at the seat's centre the line would read high by the slope times
-    half the clip's length).
+    half the clip's length). The cable is seated when the line passes that
+    exit at the seat's height, between :data:`SEATED_BELOW` under it and
+    :data:`SEATED` over it, and within :data:`SIDEWAYS` of it across: a
+    cable pushed down beside the clip reads low, or beside, or both.
 
     Args:
         seat: The clip's seat [m].  # (3,)
@@ -141,11 +172,17 @@ class ClipHeight:
         self.slot = np.asarray(slot, dtype=float)
         self.half_length = float(half_length)
         self._height: LowPass[float] = LowPass()
+        self._miss: LowPass[float] = LowPass()
 
     @property
     def height(self) -> float | None:
         """The low-passed height [m] of the cable above the seat (None before a sample)."""
         return self._height.value
+
+    @property
+    def miss(self) -> float | None:
+        """The low-passed distance [m] by which the line misses the slot's exit (None before)."""
+        return self._miss.value
 
     def update(
         self, time: float, p_gripper: FloatArray, direction: FloatArray, taut: bool
@@ -156,20 +193,27 @@ class ClipHeight:
         side = 1.0 if float((p_gripper - self.seat) @ self.slot) >= 0.0 else -1.0
         exit_point = self.seat + side * self.half_length * self.slot
         z = height_at_clip(p_gripper, direction, exit_point)
-        if z is None or not math.isfinite(z):
+        miss = miss_at_clip(p_gripper, direction, exit_point)
+        if z is None or miss is None or not (math.isfinite(z) and math.isfinite(miss)):
             return self.height
+        self._miss.update(time, miss)
         return self._height.update(time, z - float(self.seat[2]))
 
     def verdict(self, clip: str) -> Outcome:
         """After lifting: success if the cable is still seated in ``clip``, else ``not_clipped``."""
         mm = 1e3 * (self.height or 0.0)
+        beside = 1e3 * (self.miss or 0.0)
+        where = f"{mm:.1f} mm above its seat, {beside:.1f} mm beside its slot"
         if self.seated:
-            return Outcome.success(f"clipped into {clip} (cable {mm:.1f} mm above the seat)")
-        return Outcome.failure(
-            "not_clipped", f"the cable left {clip} when lifted ({mm:.1f} mm above its seat)"
-        )
+            return Outcome.success(f"clipped into {clip} (cable {where})")
+        return Outcome.failure("not_clipped", f"the cable is not in {clip} when lifted ({where})")
 
     @property
     def seated(self) -> bool:
-        """Whether the cable lies at the seat."""
-        return self.height is not None and self.height <= SEATED
+        """Whether the cable lies at the seat: at its height and in line with its slot."""
+        return (
+            self.height is not None
+            and -SEATED_BELOW <= self.height <= SEATED
+            and self.miss is not None
+            and self.miss <= SIDEWAYS
+        )

@@ -23,6 +23,7 @@ from tautwire.model import FeatureKind, PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
 from tautwire.primitives.context import ClipInfo
 from tautwire.robot import Arm
+from tautwire.tasks.cable_models import CableModels
 
 if TYPE_CHECKING:  # the scenario layer (yaml, pydantic) is the sim extra's
     from tautwire.scenario import Scenario
@@ -138,12 +139,41 @@ def initial_context(
             (the controller adapts; the true stiffness is not known).
         estimation_period: Period [s] of the contact filter's iterations.
     """
+    spec = scenario.cable(cable) if cable is not None else scenario.cables[0]
+    graph = initial_graph(scenario, spec)
+    return cable_context(
+        scenario,
+        spec.name,
+        sensing_arm(scenario, spec),
+        graph,
+        k_initial,
+        estimation_period=estimation_period,
+    )
+
+
+def cable_context(
+    scenario: Scenario,
+    cable: str,
+    arm: Arm,
+    graph: PathGraph,
+    k_initial: float | None = None,
+    *,
+    estimation_period: float = 0.0,
+) -> PrimitiveContext:
+    """The context of gripper ``arm`` sensing ``cable``, whose model is ``graph``.
+
+    Args:
+        scenario: The scenario (the board's design, the robot's settings).
+        cable: The cable's name.
+        arm: The gripper that holds it and carries a force-torque sensor.
+        graph: The cable's path graph (shared by every context of the cable).
+        k_initial: Initial stiffness guess [N/m]; default a generic 100 N/m.
+        estimation_period: Period [s] of the contact filter's iterations.
+    """
     # the scenario layer is there whenever a scenario is (the sim extra)
     from tautwire.scenario.models import CLIP_LENGTH
 
-    spec = scenario.cable(cable) if cable is not None else scenario.cables[0]
-    graph = initial_graph(scenario, spec)
-    arm = sensing_arm(scenario, spec)
+    spec = scenario.cable(cable)
     fixtures = {f.name: fixture_point(scenario, f.name) for f in scenario.board.fixtures}
     round_fixtures = {
         f.name: (fixture_point(scenario, f.name), f.radius + spec.radius + RADIUS_MARGIN)
@@ -171,3 +201,30 @@ def initial_context(
         round_fixtures=round_fixtures,
         clips=clips,
     )
+
+
+def initial_models(
+    scenario: Scenario, *, k_initial: float | None = None, estimation_period: float = 0.0
+) -> CableModels:
+    """One model per cable, with a context for each gripper that holds it with a sensor.
+
+    Args:
+        scenario: The scenario.
+        k_initial: Initial stiffness guess [N/m] of every context; default 100 N/m.
+        estimation_period: Period [s] of the contact filters' iterations.
+    """
+    sensor = scenario.robot.sensor.arm
+    sensors: frozenset[Arm] = frozenset(("left", "right") if sensor == "both" else (sensor,))
+
+    def factory(cable: str, arm: Arm, graph: PathGraph, k: float | None) -> PrimitiveContext:
+        return cable_context(
+            scenario,
+            cable,
+            arm,
+            graph,
+            k_initial if k is None else k,
+            estimation_period=estimation_period,
+        )
+
+    graphs = {spec.name: initial_graph(scenario, spec) for spec in scenario.cables}
+    return CableModels(graphs, sensors, factory)

@@ -12,12 +12,12 @@ and the robot holds still otherwise. A failed step ends with a zero twist.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
+from collections.abc import Callable, Collection
+from dataclasses import dataclass, replace
 
 from tautwire.errors import TautwireError
 from tautwire.primitives import Outcome, Primitive, PrimitiveContext
-from tautwire.robot import Command, Observation, Robot
+from tautwire.robot import Arm, Command, GripperCommand, Observation, Robot
 from tautwire.tasks.robot_guard import RobotGuard
 
 
@@ -33,6 +33,7 @@ class StepReport:
         detail: A sentence for the reader.
         sim_time: Duration [s] of the step (robot time).
         max_force: Largest measured force magnitude [N] during the step.
+        cable: The cable the step worked on (None: none, or not known).
     """
 
     primitive: str
@@ -42,6 +43,7 @@ class StepReport:
     detail: str
     sim_time: float
     max_force: float
+    cable: str | None = None
 
     @property
     def success(self) -> bool:
@@ -67,12 +69,32 @@ def _max_measured_force(obs: Observation) -> float:
     return best
 
 
+def keep_fingers_open(command: Command, arms: Collection[Arm]) -> Command:
+    """``command`` with the fingers of ``arms`` kept open.
+
+    A primitive that does not use a gripper sends it the default ``hold``;
+    to a gripper that let its cable go (a release), ``hold`` would close
+    it again on whatever cable lies between its fingers. Its fingers stay
+    open until a grasp closes them.
+    """
+    if not arms:
+        return command
+    opened = GripperCommand("open")
+    return replace(
+        command,
+        left=opened if "left" in arms else command.left,
+        right=opened if "right" in arms else command.right,
+    )
+
+
 def run_step(
     robot: Robot,
     primitive: Primitive,
     ctx: PrimitiveContext,
     on_tick: Callable[[TickRecord], None] | None = None,
     force_limit: float | None = None,
+    keep_open: Collection[Arm] = (),
+    cable: str | None = None,
 ) -> StepReport:
     """Run ``primitive`` on ``robot`` until it succeeds or fails.
 
@@ -87,6 +109,9 @@ def run_step(
         on_tick: Called after every control period in which the primitive
             was stepped (recording, plotting).
         force_limit: Force limit [N]; default ``ctx.limits.max_force``.
+        keep_open: Grippers whose fingers stay open (they let their cable
+            go; see :func:`keep_fingers_open`).
+        cable: The cable the step works on (for the report).
 
     Returns:
         The step's report. Failures of the robot or its data end the step
@@ -126,7 +151,7 @@ def run_step(
             if primitive.outcome.done:
                 outcome = primitive.outcome
                 break
-            guard.act(command)
+            guard.act(keep_fingers_open(command, keep_open))
             if on_tick is not None:
                 on_tick(TickRecord(obs, command, primitive, ctx))
             obs = guard.observe()
@@ -145,4 +170,5 @@ def run_step(
         outcome.detail,
         guard.time - t0,
         max_force,
+        cable,
     )

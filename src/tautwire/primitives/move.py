@@ -1,0 +1,176 @@
+"""Move: bring a gripper to a pose between primitives, keeping its cable taut.
+
+Not one of the paper's nine primitives: routing needs motions between them
+(SCENARIO.md, "Moves between primitives"): sweeping a held cable onto a peg,
+bringing it over a clip, lifting or re-posing a gripper, handing over.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.control import Pose, quaternion_error
+from tautwire.errors import InvalidArgumentError
+from tautwire.model.quaternion import as_quaternion
+from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
+from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.robot import Arm, Command, Observation
+
+FloatArray = NDArray[np.float64]
+
+#: Speed [m/s] the timeout allows for the distance to go (the limits allow 0.1 m/s).
+TIMEOUT_SPEED = 0.02
+#: Time [s] the timeout allows on top of the travel.
+TIMEOUT_MARGIN = 8.0
+#: A taut move ends with the low-passed tension at least this fraction of its set point.
+TENSION_FRACTION = 0.5
+
+
+class Move(Primitive):
+    """Move the gripper on ``arm`` to ``to`` (or by ``by``), optionally turning it.
+
+    With ``taut`` and a gripper that holds a cable and senses it, the cable
+    stays under its tension on the way: D's hybrid control, force control
+    along the cable (towards the contact it is taut against, measured by
+    the force), motion control across it (equ:HybridMFC_combination). The
+    target is then reached across the cable; along it the tension decides
+    where the gripper stands (the cable's length does, not the target).
+    Without ``taut``, or with a gripper that holds no cable, it is plain
+    motion control to the target pose. The other gripper holds its pose.
+
+    Preconditions: with ``taut``, a gripper that holds a cable must be the
+    context's sensing gripper (its force is what keeps the tension).
+    Model edits: none (the estimator maps the gripper's new position onto
+    the path graph; contacts the cable comes to bear on are found as in
+    every primitive).
+
+    Success: the position error (with ``taut``: its part across the
+    cable) is within ``tolerance``, the orientation within
+    ``angle_tolerance``, and with ``taut`` the cable is still taut (the
+    low-passed tension at least half its set point). Failure: ``slipped``
+    if a taut cable stays slack for a second; ``precondition``; ``timeout``.
+
+    Args:
+        arm: The gripper to move.
+        to: Target tool centre point [m], world frame.  # (3,)
+        by: Offset [m] from the start position (instead of ``to``).  # (3,)
+        orientation: Target orientation [w, x, y, z]; default the start's.
+        taut: Keep the held cable under tension on the way.
+        force: Tension set point [N]; default the context's (from D) or 2 N.
+        tolerance: Largest remaining position error [m].
+        angle_tolerance: Largest remaining orientation error [rad].
+        timeout: Longest run time [s]; default from the distance to go.
+    """
+
+    name = "move"
+    letter = ""
+
+    def __init__(
+        self,
+        arm: Arm,
+        to: Sequence[float] | None = None,
+        by: Sequence[float] | None = None,
+        orientation: Sequence[float] | None = None,
+        taut: bool = True,
+        force: float | None = None,
+        tolerance: float = 0.003,
+        angle_tolerance: float = math.radians(2.0),
+        timeout: float | None = None,
+    ) -> None:
+        super().__init__(20.0 if timeout is None else timeout)
+        if arm not in ("left", "right"):
+            raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
+        if (to is None) == (by is None):
+            raise InvalidArgumentError("a move takes exactly one of 'to' and 'by'")
+        goal = np.asarray(to if to is not None else by, dtype=float).reshape(-1)
+        if goal.shape != (3,) or not np.all(np.isfinite(goal)):
+            raise InvalidArgumentError(f"'to' or 'by' must be 3 finite numbers [m], got {goal}")
+        if force is not None and not (force > 0.0 and math.isfinite(force)):
+            raise InvalidArgumentError(f"force must be > 0 N, got {force}")
+        if not (tolerance > 0.0 and angle_tolerance > 0.0):
+            raise InvalidArgumentError("tolerance and angle_tolerance must be > 0")
+        self.arm: Arm = arm
+        self._goal = goal
+        self._absolute = to is not None
+        self.orientation = None if orientation is None else as_quaternion(orientation)
+        self.taut = bool(taut)
+        self.force = force
+        self.tolerance = float(tolerance)
+        self.angle_tolerance = float(angle_tolerance)
+        self._own_timeout = timeout is None
+        self.target = np.zeros(3)
+        self.error = math.inf  # remaining position error [m] (across the cable when taut)
+        self._holds = False
+
+    def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
+        """Fix the target pose; check that a taut cable is sensed by this gripper."""
+        me = obs.gripper(self.arm)
+        self.target = self._goal.copy() if self._absolute else me.position + self._goal
+        q = me.orientation if self.orientation is None else self.orientation
+        self._q_target = np.asarray(q, dtype=float)
+        if self._own_timeout:
+            distance = float(np.linalg.norm(self.target - me.position))
+            self.timeout = TIMEOUT_MARGIN + distance / TIMEOUT_SPEED
+        self._hold = current_pose(obs)
+        est = ctx.estimator
+        self._holds = ctx.graph.index_of("gripper", self.arm) is not None
+        self._sensing = self._holds and est.arm == self.arm
+        if self.taut and self._holds and not self._sensing:
+            self.outcome = Outcome.failure(
+                "precondition",
+                f"the {self.arm} gripper holds the cable but does not sense it "
+                f"(the {est.arm} gripper does): it cannot keep it taut",
+            )
+            return
+        if self._sensing:
+            est.learn_elasticity = False  # the motion runs across the cable
+            est.rotation = None
+        if self.force is None:
+            self.force = ctx.tension if ctx.tension is not None else 2.0
+        self._tension: LowPass[float] = LowPass()
+        self._slack = SlackWatch(1.0)
+
+    @property
+    def keeps_tension(self) -> bool:
+        """Whether the move keeps a held cable taut (force control along it)."""
+        return self.taut and self._sensing
+
+    def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
+        """Drive towards the target (tension along the cable), judge."""
+        if self.outcome.done:  # refused at the start
+            return Command()
+        assert self.force is not None
+        desired = with_pose(self._hold, self.arm, Pose(self.target, self._q_target))
+        me = obs.gripper(self.arm)
+        error = self.target - me.position
+        state = ctx.estimator.update(obs) if self._sensing else None
+        if state is not None and self.keeps_tension:
+            twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
+            d = state.direction
+            error = error - d * float(d @ error)  # across the cable
+            tension = self._tension.update(obs.time, state.tension)
+            taut_enough = state.taut and tension >= TENSION_FRACTION * self.force
+            if self._slack.update(obs.time, state.tension, self.force):
+                self.outcome = Outcome.failure("slipped", "the cable went slack while moving")
+                return Command()
+        else:
+            twist = ctx.controller(current_pose(obs), desired)
+            taut_enough = True
+        self.error = float(np.linalg.norm(error))
+        turn = 2.0 * math.asin(
+            min(1.0, float(np.linalg.norm(quaternion_error(self._q_target, me.orientation))))
+        )
+        if self.error <= self.tolerance and turn <= self.angle_tolerance and taut_enough:
+            how = " across the cable, taut" if self.keeps_tension else ""
+            self.outcome = Outcome.success(
+                f"the {self.arm} gripper is {1e3 * self.error:.1f} mm from its target{how}"
+            )
+        return Command(twist)

@@ -1,0 +1,100 @@
+"""Move: a gripper to a target, its cable kept taut on the way (SCENARIO.md, moves)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.model import PathGraph
+from tautwire.primitives import make_context
+from tautwire.primitives.move import Move
+from tautwire.primitives.registry import make_primitive
+from tautwire.tasks import run_step
+
+from .conftest import CONTACT, GRIPPER, context
+from .spring_robot import SpringCableRobot
+
+
+def _taut_robot(seed: int = 0) -> SpringCableRobot:
+    # 3 N against the contact at k = 200 N/m: 15 mm of stretch
+    robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, noise=0.05, seed=seed)
+    robot.rest -= 3.0 / 200.0
+    return robot
+
+
+def test_a_taut_move_reaches_the_target_across_the_cable_and_keeps_the_tension() -> None:
+    robot = _taut_robot()
+    ctx = context(k_initial=200.0)
+    ctx.tension = 3.0
+    # 60 mm across the cable (y), 20 mm beyond its reach along it (x)
+    target = GRIPPER + np.array([0.02, 0.06, 0.0])
+    tensions: list[float] = []
+    report = run_step(
+        robot,
+        Move("left", to=target.tolist()),
+        ctx,
+        on_tick=lambda r: tensions.append(robot.tension()),
+    )
+    assert report.success, report.detail
+    p = robot.p
+    radial = (p - CONTACT) / np.linalg.norm(p - CONTACT)
+    aim = (target - CONTACT) / np.linalg.norm(target - CONTACT)
+    # across the cable at the target's bearing from the contact ...
+    assert float(np.linalg.norm(np.cross(radial, aim))) * np.linalg.norm(target - CONTACT) < 0.004
+    # ... along it where the tension puts it, not at the unreachable target
+    assert float(np.linalg.norm(p - target)) > 0.01
+    assert min(tensions[len(tensions) // 4 :]) > 1.5
+    assert max(tensions) < 4.5
+    assert abs(robot.tension() - 3.0) < 0.6
+
+
+def test_a_move_by_an_offset_without_tension_goes_exactly_there() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, slack=0.1, noise=0.05)
+    ctx = context()
+    report = run_step(robot, Move("left", by=[-0.03, 0.02, 0.01], taut=False), ctx)
+    assert report.success, report.detail
+    assert np.allclose(robot.p, GRIPPER + np.array([-0.03, 0.02, 0.01]), atol=0.003)
+
+
+def test_a_taut_move_of_a_gripper_that_holds_the_cable_without_sensing_it_is_refused() -> None:
+    graph = PathGraph.from_positions(
+        [CONTACT, GRIPPER, GRIPPER + np.array([0.1, 0.0, 0.0])],
+        mass_per_length=0.0,
+        kinds=["fixed", "gripper", "gripper"],
+        labels=["A1", "left", "right"],
+    )
+    ctx = make_context(graph, "left")
+    robot = _taut_robot()
+    report = run_step(robot, Move("right", by=[0.0, 0.01, 0.0]), ctx)
+    assert report.cause == "precondition"
+    assert "does not sense it" in report.detail
+
+
+def test_a_cable_that_goes_slack_ends_the_move_as_slipped() -> None:
+    robot = _taut_robot()
+    ctx = context(k_initial=200.0)
+    ctx.tension = 3.0
+    robot.k = 0.0  # the cable is cut: nothing pulls any more
+    report = run_step(robot, Move("left", by=[0.0, 0.2, 0.0]), ctx)
+    assert report.cause == "slipped"
+
+
+@pytest.mark.parametrize(
+    "params",
+    [
+        {"arm": "left"},
+        {"arm": "left", "to": [0.1, 0.0, 0.1], "by": [0.0, 0.0, 0.1]},
+        {"arm": "middle", "to": [0.1, 0.0, 0.1]},
+        {"arm": "left", "to": [0.1, 0.0]},
+        {"arm": "left", "to": [0.1, 0.0, float("nan")]},
+    ],
+)
+def test_a_move_needs_one_finite_target_and_an_arm(params: dict[str, object]) -> None:
+    with pytest.raises(InvalidArgumentError):
+        make_primitive("move", **params)
+
+
+def test_a_step_s_cable_is_not_a_parameter_of_the_primitive() -> None:
+    move = make_primitive("move", arm="left", to=[0.1, 0.0, 0.1], cable="W1")
+    assert isinstance(move, Move)
