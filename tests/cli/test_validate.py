@@ -44,6 +44,13 @@ def test_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     assert status == 1 and "no such file" in err
 
 
+def test_json_of_a_missing_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["validate", str(tmp_path / "none.yaml"), "--json"]) == 1
+    out, err = capsys.readouterr()
+    obj = json.loads(out)
+    assert obj["valid"] is False and len(obj["problems"]) == 1 and err.count("\n") == 1
+
+
 def test_usage_error_without_argument(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["validate"]) == 2
     assert "SCENARIO" in capsys.readouterr().err

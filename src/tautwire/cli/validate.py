@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from typing import Any
 
 import click
@@ -113,8 +114,9 @@ def validate(scenario: str, as_json: bool) -> int:
 
     Every problem found goes to stderr, one line each, and the exit status is 1.
     """
-    path = resolve_scenario(scenario)
+    path = Path(scenario)
     try:
+        path = resolve_scenario(scenario)
         loaded = load_scenario(path)
         issues = _simulation_issues(loaded)
         if issues:
