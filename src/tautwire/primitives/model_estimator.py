@@ -34,7 +34,8 @@ from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     direction_spread,
 )
-from tautwire.estimation.force_line import line_point
+from tautwire.estimation.force_line import line_offset_variance, line_point
+from tautwire.estimation.peg_axis_fit import PegAxisFit
 from tautwire.estimation.round_contact import (
     DESIGN_TOLERANCE,
     RADIUS_STD,
@@ -261,6 +262,10 @@ class ModelEstimator:
         self._n = 0
         self._window_start: float | None = None
         self._iteration_time: float | None = None  # time [s] of the last filter iteration
+        #: The batch fit of a circled peg's axis (:mod:`~tautwire.estimation.peg_axis_fit`)
+        #: and the (label, sense) it is for; None while no peg is circled.
+        self._peg_fit: PegAxisFit | None = None
+        self._peg_fit_for: tuple[str, float] | None = None
         # the last filter samples (mean gripper position, mean raw force)
         self._recent: deque[tuple[FloatArray, FloatArray]] = deque(
             maxlen=contact_filter.detector.window
@@ -366,7 +371,46 @@ class ModelEstimator:
         if self._pending is not None:
             return self._pending.previous if self._pending.previous.running else None
         kf = self.contact_filter
-        return kf.snapshot() if kf.running else None
+        if not kf.running:
+            return None
+        state = kf.snapshot()
+        fit = None if self._peg_fit is None else self._peg_fit.estimate(state.x)
+        if fit is None:
+            return state
+        # a circled peg: its axis from the batch over every line, normal to
+        # the axis; where along it the cable bears from the filter
+        assert self._peg_fit is not None
+        a = self._peg_fit.axis
+        along = np.outer(a, a)
+        P = fit[1] + along @ state.P @ along
+        return state._replace(x=fit[0], P=P)
+
+    def _fit_peg(
+        self,
+        axis: FloatArray,
+        sense: float,
+        radius: float,
+        p_gripper: FloatArray,
+        p_line: FloatArray,
+        f: FloatArray,
+        side: FloatArray,
+    ) -> None:
+        """Add a circled peg's line to the batch fit of its axis (a new fit per peg and sense)."""
+        point = self._filter_point
+        key = ("" if point is None else point.label, float(sense))
+        if self._peg_fit is None or self._peg_fit_for != key:
+            self._peg_fit = PegAxisFit(axis, radius, RADIUS_STD)
+            self._peg_fit_for = key
+        kf = self.contact_filter
+        fn = norm3(f)
+        d = max(norm3(p_line - kf.x), kf.min_distance)
+        offset = norm3(p_line - p_gripper)
+        variance = (
+            (d * kf.force_noise / fn) ** 2
+            + kf.position_noise**2
+            + line_offset_variance(fn, offset, kf.force_noise, kf.torque_noise)
+        )
+        self._peg_fit.add(p_line, f, side, variance)
 
     def _agrees_with_design(self) -> bool:
         """Whether the filter's estimate of a fixture of the board design is near its design.
@@ -407,6 +451,8 @@ class ModelEstimator:
         if point is not self._filter_point:
             self.contact_filter.reset()
             self._pending = None
+            self._peg_fit = None
+            self._peg_fit_for = None
             self._filter_point = point
             self._design = None if point.label == "estimated" else point.position.copy()
             if self._design is not None and point.label in self.round_fixtures:
@@ -535,6 +581,8 @@ class ModelEstimator:
                     kf.make_round(radius, DRAG_OFFSET_STD)
             side = side_towards_axis(f_mean, axis, sense)
             result = kf.update(p_mean, f_mean, side, torque=tau_mean)
+            if radius > 0.0 and side is not None and result.used:
+                self._fit_peg(axis, sense, radius, p_mean, p_line, f_mean, side)
         else:
             result = kf.update(self._on_axis(p_mean, f_mean), f_mean, torque=tau_mean)
         self.iterations += 1
