@@ -15,6 +15,7 @@ from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.peg_leave import leave_point, wrap_side
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
@@ -43,21 +44,22 @@ class SingleArmClipping(Primitive):
     """Primitive F: clip the cable between a fixed point and the gripper.
 
     The cable is taut from its contact c (an estimated or fixed point) to
-    the gripper. With D's force control along the cable, the gripper first
-    moves on the sphere about c (radius: what the tension leaves) until the
-    cable's straight line passes ``ABOVE`` over the clip's seat q, along the
-    slot; then it pivots down about the clip's exit at ``PUSH_RATE``, with
-    the tension raised to three times the clip's push force
-    (:func:`push_tension`); where a soft cable's stretch would then leave
-    too shallow a bend above the table to press ``PRESS_MARGIN`` times the
-    push force, to the nearest tension that does (:class:`PivotPress`, from
-    the contact, the clip's design and k). The snap is felt
-    (:class:`ClipHeight`): the force's line drops from the jaws to the
-    seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back to the
-    straight line from c through the seat (a clipped cable lies there
-    unloaded; an unclipped one rests on the jaws); if the force's line
-    still reaches the seat, the cable is in and the model gets a fixed
-    point at q. If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
+    the gripper; from a peg, c is where the cable leaves it tangentially
+    (:meth:`_leave`), not the peg's axis. With D's force control along the
+    cable, the gripper first moves on the sphere about c (radius: what the
+    tension leaves) until the cable's straight line passes ``ABOVE`` over
+    the clip's seat q, along the slot; then it pivots down about the clip's
+    exit at ``PUSH_RATE``, with the tension raised to three times the clip's
+    push force (:func:`push_tension`); where a soft cable's stretch would
+    then leave too shallow a bend above the table to press ``PRESS_MARGIN``
+    times the push force, to the nearest tension that does
+    (:class:`PivotPress`, from the contact, the clip's design and k). The
+    snap is felt (:class:`ClipHeight`): the force's line drops from the jaws
+    to the seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back
+    to the straight line from c through the seat (a clipped cable lies there
+    unloaded; an unclipped one rests on the jaws); if the force's line still
+    reaches the seat, the cable is in and the model gets a fixed point at q.
+    If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
     table (``TABLE_CLEARANCE``; the message gives the planned press against
@@ -108,7 +110,7 @@ class SingleArmClipping(Primitive):
         self.sensing = ClipHeight(info.position, info.slot, 0.5 * info.length)
         state = ctx.estimator.update(obs)
         c = state.contact
-        self._contact = c.copy()
+        self._contact = self._leave(ctx, state, obs.gripper(self.arm).position, info)
         self._known = [id(p) for p in ctx.graph.points]
         seat = info.position
         along = seat - c
@@ -132,6 +134,36 @@ class SingleArmClipping(Primitive):
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
         self._base_force = ctx.tension if ctx.tension is not None else 2.0
         self._since = obs.time
+
+    def _leave(
+        self, ctx: PrimitiveContext, state: TensionState, p_gripper: np.ndarray, info: ClipInfo
+    ) -> np.ndarray:
+        """Where the cable leaves its contact on the way over the clip [m].
+
+        A point contact (an anchor, a clip, an estimated point): the
+        contact itself. A peg: the cable leaves it tangentially, its radius
+        (the filter's estimate, else the design's peg + cable radius) beside
+        the axis point the model holds, on the side it wraps it now
+        (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
+        line): the tangent point of the line over the clip
+        (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
+        axis would put the cable a radius beside the slot.
+        """
+        c = state.contact.copy()
+        est = ctx.estimator
+        i = est.contact_index
+        label = ctx.graph.points[i].label if i is not None else ""
+        if label not in est.round_fixtures:
+            return c
+        estimate = est.contact_estimate()
+        radius = (
+            estimate.radius
+            if estimate is not None and estimate.radius is not None
+            else est.round_fixtures[label][1]
+        )
+        side = wrap_side(c, p_gripper, state.direction)
+        through = info.position + np.array([0.0, 0.0, ABOVE])
+        return leave_point(c, radius, through, side)
 
     def _plan_force(self, p_gripper: np.ndarray, tension: float, ctx: PrimitiveContext) -> float:
         """The push tension [N]: three times the push force, unless the bend cannot press enough.

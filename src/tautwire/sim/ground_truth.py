@@ -229,6 +229,13 @@ class GroundTruth:
             raise InvalidArgumentError(f"fixture {name!r} is not a peg")
         return float(fixture.radius)
 
+    def seat(self, clip: str, cable: str) -> FloatArray:
+        """The point [m] of ``cable`` that sits in clip ``clip``: the nearest to its seat."""
+        spec = self._fixture(clip)
+        if not isinstance(spec, ClipSpec):
+            raise InvalidArgumentError(f"fixture {clip!r} is not a clip")
+        return closest_on_polyline(self.polyline(cable), spec.position)
+
     def fixture_names(self) -> tuple[str, ...]:
         """Names of every fixture of the board."""
         return tuple(f.name for f in self._world.spec.fixtures)

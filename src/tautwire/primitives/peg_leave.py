@@ -1,0 +1,64 @@
+"""Where a taut cable leaves a peg: the tangent point, not the peg's axis.
+
+A cable wrapped round a peg leaves it tangentially, a peg radius plus a
+cable radius beside the axis (SCENARIO.md: a peg's estimate is its axis
+point). A primitive that aims the cable from the peg at a goal (a clip's
+slot) aims from that tangent point, on the side the cable wraps the peg.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+FloatArray = NDArray[np.float64]
+
+
+def wrap_side(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatArray) -> float:
+    """On which side of the cable the peg's axis lies, seen from the peg towards the gripper.
+
+    Args:
+        axis_point: A point [m] of the peg's (vertical) axis.  # (3,)
+        p_gripper: Gripper position [m].  # (3,)
+        direction: Unit tension direction from the gripper towards the peg.  # (3,)
+
+    Returns:
+        +1 if the axis is on the cable's left (seen from above, heading from
+        the peg to the gripper), -1 on its right, 0 if the line passes
+        through the axis (no side).
+    """
+    heading = -np.asarray(direction, dtype=float)  # from the peg towards the gripper
+    r = np.asarray(axis_point, dtype=float) - np.asarray(p_gripper, dtype=float)
+    cross = float(heading[0] * r[1] - heading[1] * r[0])
+    return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
+
+
+def leave_point(
+    axis_point: FloatArray, radius: float, through: FloatArray, side: float
+) -> FloatArray:
+    """The point [m] where the cable leaves the peg on its way to pass over ``through``.
+
+    The tangent point, on the circle of ``radius`` [m] about the axis (peg
+    radius plus cable radius), of the line to ``through`` that keeps the
+    axis on ``side`` (+1: the cable's left, seen towards ``through``; as
+    :func:`wrap_side`). At the axis point's height. With ``side`` 0, or
+    ``through`` inside the circle, the axis point itself.
+    """
+    c = np.asarray(axis_point, dtype=float)
+    v = np.asarray(through, dtype=float)[:2] - c[:2]
+    dist = float(np.hypot(v[0], v[1]))
+    if side == 0.0 or dist <= radius or radius <= 0.0:
+        return c.copy()
+    beta = math.acos(radius / dist)
+    u = v / dist
+    best = c.copy()
+    for sign in (1.0, -1.0):
+        cb, sb = math.cos(sign * beta), math.sin(sign * beta)
+        t = c[:2] + radius * np.array([cb * u[0] - sb * u[1], sb * u[0] + cb * u[1]])
+        heading = np.asarray(through, dtype=float)[:2] - t
+        r = c[:2] - t
+        if math.copysign(1.0, float(heading[0] * r[1] - heading[1] * r[0])) == side:
+            best = np.array([t[0], t[1], c[2]])
+    return best

@@ -1,0 +1,47 @@
+"""The tangent point where a taut cable leaves a peg."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+
+from tautwire.primitives.peg_leave import leave_point, wrap_side
+
+AXIS = np.array([0.25, 0.15, 0.08])
+
+
+@given(st.floats(-math.pi, math.pi), st.floats(0.05, 0.3), st.sampled_from([1.0, -1.0]))
+def test_the_line_from_the_leave_point_is_tangent_and_keeps_the_peg_on_its_side(
+    bearing: float, distance: float, side: float
+) -> None:
+    rho = 0.0085
+    through = AXIS + distance * np.array([math.cos(bearing), math.sin(bearing), 0.0])
+    t = leave_point(AXIS, rho, through, side)
+    assert float(np.linalg.norm((t - AXIS)[:2])) == pytest.approx(rho)
+    assert t[2] == AXIS[2]
+    # tangent: the radius is normal to the line
+    assert float((t - AXIS)[:2] @ (through - t)[:2]) == pytest.approx(0.0, abs=1e-9)
+    # a gripper beyond ``through`` on that line sees the peg on that side
+    gripper = t + 1.5 * (through - t)
+    direction = (t - gripper) / np.linalg.norm(t - gripper)
+    assert wrap_side(AXIS, gripper, direction) == side
+
+
+def test_without_a_side_or_from_inside_the_circle_it_is_the_axis_point() -> None:
+    far = AXIS + np.array([0.1, 0.0, 0.0])
+    assert np.array_equal(leave_point(AXIS, 0.008, far, 0.0), AXIS)
+    assert np.array_equal(leave_point(AXIS, 0.008, AXIS + np.array([0.005, 0, 0]), 1.0), AXIS)
+
+
+def test_a_line_beside_the_axis_says_which_side_the_peg_is_on() -> None:
+    gripper = AXIS + np.array([0.2, 0.0, 0.0])
+    # the line from the gripper passes 8 mm south of the axis: heading east from the
+    # peg to the gripper, the axis is on the cable's left (north)
+    towards = AXIS + np.array([0.0, -0.008, 0.0]) - gripper
+    assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == 1.0
+    towards = AXIS + np.array([0.0, 0.008, 0.0]) - gripper
+    assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == -1.0
