@@ -64,6 +64,7 @@ reported std on every axis (per axis; :attr:`FilterSample.nees` gives the
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -77,6 +78,9 @@ from tautwire.robot import Arm
 from tautwire.sim.ground_truth import GroundTruth, TautSpan, closest_on_polyline
 
 FloatArray = NDArray[np.float64]
+#: The largest std [m] of an estimate the robot trusts: one number, or the
+#: model's rule per point (:meth:`ModelEstimator.trust_limit`).
+TrustLimit = float | Callable[[Any], float]
 
 #: Tolerance [m] of a contact estimate: for an anchor or a clip; a peg adds its radius.
 CONTACT_TOLERANCE = 0.003
@@ -190,7 +194,7 @@ def true_contacts(truth: GroundTruth, cable: str) -> dict[str, FloatArray]:
 
 
 def check_contacts(
-    graph: PathGraph, truth: GroundTruth, cable: str, trusted_std: float
+    graph: PathGraph, truth: GroundTruth, cable: str, trusted_std: TrustLimit
 ) -> list[ContactCheck]:
     """Every contact and fixed point of ``graph`` against the true contacts of ``cable``.
 
@@ -203,7 +207,8 @@ def check_contacts(
         graph: The model.
         truth: The simulator's truth.
         cable: The cable the model is of.
-        trusted_std: Largest std [m] of an estimate the robot acts on.
+        trusted_std: Largest std [m] of an estimate the robot acts on, or the
+            model's rule per point (:meth:`ModelEstimator.trust_limit`).
     """
     real = true_contacts(truth, cable)
     fixtures = set(truth.fixture_names())
@@ -247,9 +252,14 @@ def _std(covariance: FloatArray | None) -> FloatArray | None:
     return out
 
 
-def _made_up(pt: Any, trusted_std: float, reason: str) -> ContactCheck:
+def _limit(trusted_std: TrustLimit, pt: Any) -> float:
+    """The largest std [m] at which the robot trusts ``pt``: a number, or its model's rule."""
+    return float(trusted_std(pt)) if callable(trusted_std) else float(trusted_std)
+
+
+def _made_up(pt: Any, trusted_std: TrustLimit, reason: str) -> ContactCheck:
     std = _std(pt.covariance)
-    trusted = std is not None and float(np.max(std)) <= trusted_std
+    trusted = std is not None and float(np.max(std)) <= _limit(trusted_std, pt)
     return ContactCheck(
         pt.label, None, None, pt.position.copy(), None, None, None, std, trusted, reason
     )
@@ -260,7 +270,7 @@ def _check(
     name: str,
     pt: Any,
     real: dict[str, FloatArray],
-    trusted_std: float,
+    trusted_std: TrustLimit,
     claimed: set[str],
 ) -> ContactCheck:
     if name not in real:
@@ -269,7 +279,7 @@ def _check(
         return _made_up(pt, trusted_std, f"another point already stands for {name}")
     claimed.add(name)
     std = _std(pt.covariance)
-    trusted = std is not None and float(np.max(std)) <= trusted_std
+    trusted = std is not None and float(np.max(std)) <= _limit(trusted_std, pt)
     t = real[name]
     return ContactCheck(
         pt.label,
@@ -572,7 +582,7 @@ def check_step(
         ok = held is not None and held[0] == watch.cable
         agrees &= ok
         parts.append(f"the {watch.arm} gripper {'holds' if ok else 'does not hold'} {watch.cable}")
-    model = judge_model(check_contacts(ctx.graph, truth, watch.cable, ctx.estimator.trusted_std))
+    model = judge_model(check_contacts(ctx.graph, truth, watch.cable, ctx.estimator.trust_limit))
     agrees &= model.agrees
     parts.append(model.detail)
     detail = "; ".join(parts)
@@ -843,7 +853,7 @@ class RunAudit:
     def finish(self, ctx: PrimitiveContext, graphs: dict[str, PathGraph] | None = None) -> None:
         """Check the final models: ``graphs`` by cable (default ``ctx``'s, the audit's cable)."""
         models = {self.cable: ctx.graph} if graphs is None else graphs
-        trusted_std = ctx.estimator.trusted_std
+        trusted_std = ctx.estimator.trust_limit
         self.contacts = [
             c
             for cable, graph in models.items()
@@ -904,11 +914,10 @@ def point_deviations(
     """Each point of ``cable``'s model that stands for a fixture or a gripper, against it.
 
     A gripper's point against its true tool centre point; a contact or
-    fixed point against the true point of the fixture it stands for
-    (:func:`check_contacts` says which): an anchor, a peg's axis point at the
-    cable's height, for a clip the cable's point nearest its seat (the
-    clipping primitives put the clip's point at its seat). A made-up point
-    stands for nothing and is left out (the step's truth counts it).
+    fixed point against the true contact of the fixture it stands for
+    (:func:`check_contacts`: an anchor, a clip's exit, a peg's axis point at
+    the cable's height). A made-up point stands for nothing and is left out
+    (the step's truth counts it).
     """
     out: list[PointDeviation] = []
     for pt in graph.points:
@@ -923,9 +932,7 @@ def point_deviations(
     for c in check_contacts(graph, truth, cable, trusted_std):
         if c.made_up or c.truth is None or c.fixture is None:
             continue
-        # a clip's point is its seat (where F and C put it), not the slot's exit
-        true = truth.seat(c.fixture, cable) if c.fixture_type == "clip" else c.truth
-        d = c.estimate - true
+        d = c.estimate - c.truth
         out.append(
             PointDeviation(cable, c.label, c.fixture, float(np.hypot(d[0], d[1])), abs(d[2]))
         )
