@@ -914,10 +914,11 @@ def point_deviations(
     """Each point of ``cable``'s model that stands for a fixture or a gripper, against it.
 
     A gripper's point against its true tool centre point; a contact or
-    fixed point against the true contact of the fixture it stands for
-    (:func:`check_contacts`: an anchor, a clip's exit, a peg's axis point at
-    the cable's height). A made-up point stands for nothing and is left out
-    (the step's truth counts it).
+    fixed point against the true point of the fixture it stands for
+    (:func:`check_contacts` says which): an anchor, a peg's axis point at the
+    cable's height, for a clip the cable's point nearest its seat (the
+    clipping primitives put the clip's point at its seat). A made-up point
+    stands for nothing and is left out (the step's truth counts it).
     """
     out: list[PointDeviation] = []
     for pt in graph.points:
@@ -932,7 +933,9 @@ def point_deviations(
     for c in check_contacts(graph, truth, cable, trusted_std):
         if c.made_up or c.truth is None or c.fixture is None:
             continue
-        d = c.estimate - c.truth
+        # a clip's point is its seat (where F and C put it), not the slot's exit
+        true = truth.seat(c.fixture, cable) if c.fixture_type == "clip" else c.truth
+        d = c.estimate - true
         out.append(
             PointDeviation(cable, c.label, c.fixture, float(np.hypot(d[0], d[1])), abs(d[2]))
         )
