@@ -92,7 +92,7 @@ def test_a_grasp_runs_on_the_holding_gripper_s_context_and_a_later_context_inher
 
 def test_after_a_release_the_gripper_holds_nothing_and_only_moves_can_use_it() -> None:
     models = _models(BOTH, W1=["left"], W2=["right"])
-    step = models.select("", {"arm": "right"})
+    step = models.select("", {"arm": "right"}, "release")
     assert step.cable == "W2"
     positions = {"left": np.array([0.3, 0.0, 0.1]), "right": np.array([0.3, 0.1, 0.1])}
     release_point(models.graphs["W2"], "right", positions)
@@ -102,10 +102,19 @@ def test_after_a_release_the_gripper_holds_nothing_and_only_moves_can_use_it() -
     assert models.final("W2") is step.context  # the model stays, for scoring
     with pytest.raises(StepModelError, match="holds no cable"):
         models.select("G", {"arm": "right"})
-    free = models.select("", {"arm": "right", "to": [0.3, 0.0, 0.2]})
+    free = models.select("", {"arm": "right", "to": [0.3, 0.0, 0.2]}, "move")
     assert free.cable is None
 
 
 def test_with_one_cable_a_step_of_a_free_gripper_works_on_it() -> None:
     models = _models(frozenset(("left",)), W1=["left"])
     assert models.select("H", {"arm": "right", "at": 0.1}).cable == "W1"
+
+
+def test_a_release_or_an_untaut_move_needs_no_sensor_on_its_gripper() -> None:
+    models = _models(frozenset(("left",)), W1=["left", "right"])
+    assert models.select("", {"arm": "right"}, "release").context.arm == "left"
+    untaut = models.select("", {"arm": "right", "by": [0, 0, 0.01], "taut": False}, "move")
+    assert untaut.context.arm == "left"
+    with pytest.raises(StepModelError, match="carries no force sensor"):
+        models.select("", {"arm": "right", "by": [0, 0, 0.01]}, "move")

@@ -16,9 +16,23 @@ from tautwire.robot import Command, Observation
 
 
 def held_between_grippers(ctx: PrimitiveContext) -> bool:
-    """Whether the sensing gripper's edge ends at the other gripper (both hold the cable)."""
-    c = ctx.estimator.contact_index
-    return c is not None and ctx.graph.points[c].kind == "gripper"
+    """Whether both grippers hold the cable and the sensing gripper's edge runs towards the other.
+
+    The edge ends at the other gripper, or at a clip between the two (after
+    C, or F, the clip's point sits between the grippers: the sensing
+    gripper then feels the tension of its side of the clip, which A, B and
+    C control).
+    """
+    est = ctx.estimator
+    graph = ctx.graph
+    c = est.contact_index
+    other = graph.index_of("gripper", "right" if est.arm == "left" else "left")
+    if c is None or other is None:
+        return False
+    if graph.points[c].kind == "gripper":
+        return True
+    lo, hi = sorted((est.gripper_index, other))
+    return graph.points[c].kind == "fixed" and lo < c < hi
 
 
 class ParallelTension(Primitive):

@@ -139,14 +139,21 @@ class CableModels:
         )
 
     # ----------------------------------------------------------- selection
-    def select(self, letter: str, params: Mapping[str, object]) -> StepModel:
+    def select(self, letter: str, params: Mapping[str, object], primitive: str = "") -> StepModel:
         """The cable and context for a step of primitive ``letter`` with ``params``.
 
         The cable is the step's ``cable``, else the one its gripper holds,
         else the only cable. A single-arm primitive that senses (D, E, F, G,
-        I) runs with its own arm's context: that arm must hold the cable and
-        carry a sensor. A move or a release of a gripper that holds no cable
-        runs on no cable.
+        I) and a taut ``move`` of a gripper that holds the cable run with
+        their own arm's context: that arm must hold the cable and carry a
+        sensor. A ``release`` and an untaut move run on the cable's context
+        (any gripper sensing it); a move or a release of a gripper that holds
+        no cable runs on no cable.
+
+        Args:
+            letter: The primitive's letter ("" for a move).
+            params: The step's parameters.
+            primitive: The primitive's name (tells ``move`` from ``release``).
 
         Raises:
             StepModelError: naming what is missing.
@@ -175,7 +182,8 @@ class CableModels:
                 )
             return StepModel(None, self._any())
         holders = self.holders(cable)
-        if letter in SENSING_LETTERS or (move and step_arm in holders):
+        taut_move = primitive == "move" and bool(params.get("taut", True))
+        if letter in SENSING_LETTERS or (taut_move and step_arm in holders):
             assert step_arm is not None  # these primitives all take an arm
             if step_arm not in holders:
                 raise StepModelError(f"the {step_arm} gripper does not hold {cable}")

@@ -94,7 +94,7 @@ def run_task(
         named = params.get("arm")
         arm: Arm | None = "left" if named == "left" else "right" if named == "right" else None
         try:
-            model = models.select(step.letter, params)
+            model = models.select(step.letter, params, step.primitive)
         except StepModelError as exc:
             report = StepReport(
                 step.primitive, step.letter, "failure", "precondition", str(exc), 0.0, 0.0
