@@ -11,6 +11,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.model_edits import drop_new_points
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
@@ -33,6 +34,12 @@ class GripperAlignment(Primitive):
     Success: the angle between that tool axis and the cable stays below
     ``tolerance`` for ``hold_time``. Failure: ``slipped`` if the cable goes
     slack; ``not_aligned`` at the timeout.
+
+    Preconditions: the gripper holds the cable taut and senses it. Model
+    edits: none. Turning in place moves the force's line by millimetres
+    about the fingers, which the contact filter can read as a new contact
+    next to the gripper: a contact point added while G runs is dropped when
+    it ends (the cable's contacts are what they were before).
 
     Args:
         arm: The gripper to align (it carries the sensor).
@@ -75,6 +82,7 @@ class GripperAlignment(Primitive):
         self._within_since: float | None = None
         self._slack = SlackWatch(1.0)
         self._axis = ToolAxis()
+        self._known = [id(p) for p in ctx.graph.points]
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Keep the tension, turn towards the cable, judge."""
@@ -90,6 +98,8 @@ class GripperAlignment(Primitive):
         desired = with_pose(self._hold, self.arm, mine)
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
         self._judge(obs, state.tension, state.taut)
+        if self.outcome.done:  # G never edits contacts
+            drop_new_points(ctx.graph, self._known)
         return Command(twist)
 
     def _judge(self, obs: Observation, tension: float, taut: bool) -> None:
