@@ -267,6 +267,9 @@ def reproduce_fig5c(out_dir: str | Path, seed: int = 0) -> dict[str, Any]:
         "peak_error_after_declared": (float(np.nanmax(err[declared[0] :])) if declared else None),
         "samples_to_2mm_after_change": settled,
         "final_error": float(err[-1]) if len(err) else None,
+        "final_within_3std": bool(
+            len(err) and np.all(np.abs(est[-1] - truth[-1]) <= 3.0 * std[-1])
+        ),
         "final_fixture": fixtures[-1] if fixtures else None,
         "run": run["result"],
     }
