@@ -20,10 +20,12 @@ from tautwire.scenario.loader import scenario_from_data
 from tautwire.scenario.writer import scenario_document
 
 
-def _after(letter: str, extra: list[dict[str, Any]]) -> RunResult:
+def _after(letter: str, extra: list[dict[str, Any]], before_last: bool = False) -> RunResult:
+    """The scene of ``letter`` with ``extra`` after its task (or before its last step)."""
     seed = trial_seed(0, letter, 0)
     doc = scenario_document(trial_scene(letter, seed).scenario)
-    doc["task"] = list(doc["task"]) + extra
+    task = list(doc["task"])
+    doc["task"] = task[:-1] + extra + task[-1:] if before_last else task + extra
     result, _, _ = run_scenario(scenario_from_data(doc), seed)
     return result
 
@@ -61,3 +63,21 @@ def test_a_hand_over_grasp_release_and_the_first_gripper_pulls_again() -> None:
     _all_true(result)
     assert "truly let go" in result.steps[2]["truth"]["detail"]
     assert "against A1" in result.steps[-1]["truth"]["detail"]
+
+
+@pytest.mark.slow
+def test_f_after_a_regrip_feels_the_snap_where_the_cable_leaves_the_fingers() -> None:
+    # E leaves the cable behind and below the tool centre point; F reads the
+    # clip's height from the force's line of action, not from the TCP (from
+    # the TCP it read 12.8 mm above the seat and never felt the snap)
+    result = _after(
+        "F",
+        [
+            {"primitive": "E", "arm": "left", "distance": 0.03, "friction_force": 1.5},
+            {"primitive": "D", "arm": "left", "force": 3.0},
+        ],
+        before_last=True,
+    )
+    _all_true(result)
+    assert result.steps[-1]["letter"] == "F"
+    assert "is in the jaws of C1" in result.steps[-1]["truth"]["detail"]

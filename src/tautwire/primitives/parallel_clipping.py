@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from tautwire.control import CoordinatedPose, DualPose, Pose, coordinated_pose
+from tautwire.estimation.force_line import line_point
 from tautwire.model.quaternion import multiply, orientation_along, rotate
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose
@@ -128,7 +129,11 @@ class ParallelClipping(Primitive):
         if self.outcome.done:
             return Command()
         sensor = obs.gripper(ctx.estimator.arm)
-        height = self.sensing.update(obs.time, sensor.position, state.direction, state.taut)
+        wrench = obs.wrench(ctx.estimator.arm)
+        # where the cable leaves the fingers: on the force's line of action
+        # (behind or beside the tool centre point after a regrip, B)
+        leaves = line_point(sensor.position, wrench.force, wrench.torque)
+        height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
         force = self._base_force
         now = coordinated_pose(self._tool_frames(obs))
         if self.phase == "align":

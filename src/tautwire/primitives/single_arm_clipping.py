@@ -8,6 +8,7 @@ import numpy as np
 
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.force_line import line_point
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import ClipHeight, PivotPress, push_tension
@@ -219,7 +220,11 @@ class SingleArmClipping(Primitive):
         if self.outcome.done:
             return Command()
         me = obs.gripper(self.arm)
-        height = self.sensing.update(obs.time, me.position, state.direction, state.taut)
+        wrench = obs.wrench(self.arm)
+        # where the cable leaves the fingers: on the force's line of action,
+        # behind or beside the tool centre point after a regrip (E, B)
+        leaves = line_point(me.position, wrench.force, wrench.torque)
+        height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
