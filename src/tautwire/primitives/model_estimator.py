@@ -34,6 +34,7 @@ from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     direction_spread,
 )
+from tautwire.estimation.force_bias_monitor import ForceBiasMonitor
 from tautwire.estimation.force_line import line_offset_variance, line_point
 from tautwire.estimation.peg_axis_fit import PegAxisFit
 from tautwire.estimation.round_contact import (
@@ -277,6 +278,8 @@ class ModelEstimator:
         #: and the (label, sense) it is for; None while no peg is circled.
         self._peg_fit: PegAxisFit | None = None
         self._peg_fit_for: tuple[str, float] | None = None
+        #: Watches the pull's direction against its size for a drifting sensor bias.
+        self.bias_monitor = ForceBiasMonitor(min_tension=taut_tension, windows=3)
         # the last filter samples (mean gripper position, mean raw force)
         self._recent: deque[tuple[FloatArray, FloatArray]] = deque(
             maxlen=contact_filter.detector.window
@@ -397,6 +400,23 @@ class ModelEstimator:
         P = fit[1] + along @ state.P @ along
         return state._replace(x=fit[0], P=P)
 
+    def _watch_bias(self, time: float, f: FloatArray) -> None:
+        """Feed the bias monitor the weight-compensated pull [N]; a drifting bias ends the step.
+
+        Raises:
+            ModelInconsistentError: when the pull's direction changes with its
+                size as only a sensor bias makes it (cause ``sensor_bias``).
+        """
+        self.bias_monitor.add(time, f)
+        if self.bias_monitor.drifting():
+            est = self.bias_monitor.drift
+            assert est is not None
+            raise ModelInconsistentError(
+                f"the pull's direction changes with its size as a {norm3(est.bias):.2f} N"
+                f" force bias (std {est.std:.2f} N, over {est.windows} windows) makes it:"
+                " a drifting force-torque sensor bias"
+            )
+
     def _fit_peg(
         self,
         axis: FloatArray,
@@ -506,6 +526,8 @@ class ModelEstimator:
         else:
             direction = np.array([0.0, 0.0, -1.0])
         tension = max(float(f @ direction), 0.0)
+        if taut and self.rotation is not None and self.contact_filter.running:
+            self._watch_bias(obs.time, f)  # I swings its tension: a bias shows
         if c is not None:
             # the cable length to the contact sets the filter's noise scale
             # (never the distance to its own estimate, which can collapse)

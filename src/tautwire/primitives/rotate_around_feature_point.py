@@ -25,6 +25,12 @@ from tautwire.robot import Arm, Command, Observation
 MAX_DIRECTION_NOISE = 0.02
 #: The angle turned counts only while the tension is at least this fraction of its set point.
 TRACK_TENSION = 0.5
+#: Relative swing of the tension set point while circling, and its frequency
+#: [Hz]: a cable's pull keeps its direction however hard it pulls, a force
+#: sensor's bias does not, so the swing lets the model estimator see a drifting
+#: bias (:mod:`~tautwire.estimation.force_bias_monitor`).
+TENSION_SWING = 0.2
+SWING_FREQUENCY = 1.5
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -104,6 +110,7 @@ class RotateAroundFeaturePoint(Primitive):
         self.slack_time = float(slack_time)
         self.turned = 0.0  # angle [rad] the cable's direction has turned so far
         self._previous: np.ndarray | None = None
+        self._tracked_time: float | None = None  # time [s] of the last direction counted
         self._slack = SlackWatch(self.slack_time)
         self._ever_taut = False
 
@@ -115,6 +122,7 @@ class RotateAroundFeaturePoint(Primitive):
         ctx.estimator.rotation = (self.axis, math.copysign(1.0, self.angle))
         self.turned = 0.0
         self._previous = None
+        self._tracked_time = None
         self._slack.reset()
         self._ever_taut = False
         self._axis = ToolAxis()
@@ -144,7 +152,13 @@ class RotateAroundFeaturePoint(Primitive):
             radial = -self._direction.update(obs.time, state.direction)
             radial = radial - self.axis * float(self.axis @ radial)
             step = 3.0 * self._speed_limit(ctx) * ctx.control_period / max(radius, 0.02)
-            self._track_angle(radial, step + MAX_DIRECTION_NOISE)
+            # after a gap (the cable pulled weakly: a slip, a catch) the cable
+            # turned on meanwhile: as far as the gripper can turn it in the gap
+            periods = 1.0
+            if self._tracked_time is not None:
+                periods = max(1.0, (obs.time - self._tracked_time) / ctx.control_period)
+            self._tracked_time = obs.time
+            self._track_angle(radial, periods * step + MAX_DIRECTION_NOISE)
         # set point ahead on the circle: P control with gain k_p then moves
         # tangentially at speed * radius (feed-forward through the set point)
         speed = self.speed
@@ -158,7 +172,8 @@ class RotateAroundFeaturePoint(Primitive):
             self._axis.target(me.orientation, state.direction) if state.taut else me.orientation
         )
         desired = with_pose(current_pose(obs), self.arm, Pose(target, q_target))
-        twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
+        swing = 1.0 + TENSION_SWING * math.sin(2.0 * math.pi * SWING_FREQUENCY * obs.time)
+        twist = tension_twist(ctx, obs, self.arm, desired, self.force * swing, state)
         self._judge(obs, state.tension, state.taut)
         self._check_travel(ctx, state)
         return Command(twist)
