@@ -1,66 +1,74 @@
-"""Plan a route: from a cable's target route to the task that does it.
+"""Plan and run a route: from a cable's target route to the task, run in the simulator.
 
-A cable fixed at anchor A1 must pass peg P1 on its left, wound once round
-it, then be pushed into clips C1 and C2. The scenario gives only the route
-(``route:`` on the cable, no ``task:``); the planner
+A cable fixed at anchor A1 must be pushed into clip C1. The scenario gives
+only the route (``route:`` on the cable, no ``task:``); the planner
 (:mod:`tautwire.tasks.planner`) turns it into primitives and moves, each with
 the reason it is there, and checks every gripper point against the reach,
-each clip's height and slot, and the cable's length. The planned task is
-itself a valid scenario task: pasted into the file, it validates. A route
-the robot cannot do is refused in one line naming the cable, the route
-entry and the reason.
+the clip's height and slot, and the cable's length. The planned task is
+itself a valid scenario task: pasted into the file, it validates.
 
-Running a planned task needs the ``move`` and ``release`` steps, which the
-runner does not execute yet (the schema and the planner have them): this
-example plans and checks, it does not run.
+:func:`~tautwire.experiments.run_scenario.run_scenario` then runs the
+planned task (a scenario with routes and no task runs the planner's) in the
+MuJoCo world. The robot is blind: each step's outcome is what it concluded
+from its force-torque sensor, and ``route_done`` is its claim that the cable
+is on its route. Each step's truth and the cable's ``route_truth`` are what
+the simulator shows, read only to score the run: a success the simulator
+denies counts as a false success.
 
-Run: python examples/plan_route.py
+Run: python examples/plan_route.py [--seed N]
 """
 
 from __future__ import annotations
 
-import math
+import argparse
 
 import yaml
 
+from tautwire.experiments.run_scenario import RunResult, run_scenario
 from tautwire.scenario import parse_scenario
 from tautwire.scenario.route_problem import plan_scenario, task_yaml
-from tautwire.tasks.planner import Plan, RouteError
 
 SCENARIO = """
 version: 1
-name: wind-and-clip
+name: anchor-to-clip
 seed: 0
 robot:
-  sensor: {arm: both}
+  control_period: 0.004
+  force_limit: 15.0
+  sensor: {arm: both, noise_force: 0.05, noise_torque: 0.002}
   grippers:
-    left:  {position: [0.30, 0.20, 0.10]}
-    right: {position: [0.30, -0.20, 0.10]}
+    left:  {position: [0.42, 0.20, 0.10]}
+    right: {position: [0.40, -0.05, 0.12]}
 board:
   fixtures:
-    - {name: A1, type: anchor, position: [0.05, 0.20, 0.08]}
-    - {name: P1, type: peg, position: [0.20, 0.15, 0.05], radius: 0.006, height: 0.06}
-    - {name: C1, type: clip, position: [0.35, 0.10, 0.08], yaw: 0.0, push_force: 2.5}
-    - {name: C2, type: clip, position: [0.50, 0.10, 0.08], yaw: 0.0, push_force: 2.5}
+    - {name: A1, type: anchor, position: [0.10, 0.20, 0.08]}
+    - {name: C1, type: clip, position: [0.30, 0.20, 0.08], yaw: 0.0, push_force: 2.5}
 cables:
   - name: W1
-    length: 0.70
+    length: 0.60
     mass_per_length: 0.030
     stiffness: 200.0
     radius: 0.0025
     start: A1
     held_by: {arm: left, at: 0.35}
     route:
-      - {fixture: P1, side: left, wind: 1}
       - {fixture: C1}
-      - {fixture: C2}
 """
 
 
-def main() -> Plan:
-    """Plan the route, check the plan validates as a task, show a refused route."""
-    scenario = parse_scenario(SCENARIO, source="wind-and-clip")
+def main(seed: int = 0) -> RunResult:
+    """Plan the route, check the plan validates as a task, run it and score it.
+
+    Args:
+        seed: Seed of the simulated world (sensor noise).
+
+    Returns:
+        The run's result: per step its outcome and truth, per cable
+        ``route_done`` and ``route_truth``.
+    """
+    scenario = parse_scenario(SCENARIO, source="anchor-to-clip")
     plan = plan_scenario(scenario)
+    print("plan:")
     for i, step in enumerate(plan.steps, start=1):
         params = ", ".join(
             f"{k}={v:.3g}" if isinstance(v, float) else f"{k}={v}"
@@ -68,13 +76,6 @@ def main() -> Plan:
             if k != "cable"
         )
         print(f"{i:2d}. {step.primitive}({params})  # {step.why}")
-    (w1,) = plan.cables
-    print(
-        f"cable W1: {w1.route_length:.3f} m of its 0.70 m routed, "
-        f"held by the {w1.arm} gripper at {w1.held_at:.3f} m at the end"
-    )
-    winding = next(s for s in plan.steps if s.primitive == "rotate_around_feature_point")
-    print(f"I winds {math.degrees(float(winding.params['angle'])):.0f} deg about P1")
 
     # the plan is a task the schema accepts: paste it into the file and validate
     data = yaml.safe_load(SCENARIO)
@@ -82,14 +83,28 @@ def main() -> Plan:
     planned = parse_scenario(yaml.safe_dump(data, sort_keys=False), source="planned")
     print(f"the planned task validates: {len(planned.task)} steps")
 
-    # too little cable for the route: refused, with the reason
-    short = SCENARIO.replace("length: 0.70", "length: 0.40")
-    try:
-        plan_scenario(parse_scenario(short, source="short"))
-    except RouteError as exc:
-        print(f"a 0.40 m cable: {exc}")
-    return plan
+    # run it: no task in the scenario, so the runner runs the planner's
+    result, _, _ = run_scenario(scenario, seed=seed)
+    print(f"run (seed {seed}):")
+    for i, done in enumerate(result.steps, start=1):
+        name = f"{done['letter']} {done['primitive']}" if done["letter"] else done["primitive"]
+        print(f"{i:2d}. {name}: {done['outcome']} after {done['sim_time']:.1f} s, {done['detail']}")
+        verdict = "agrees" if done["truth"]["agrees"] else "DISAGREES"
+        print(f"    truth {verdict}: {done['truth']['detail']}")
+    for cable in result.cables:
+        truth = cable["route_truth"]
+        print(
+            f"cable {cable['name']}: route_done {cable['route_done']}; the simulator "
+            f"{'agrees' if truth['agrees'] else 'disagrees'}: {truth['detail']}"
+        )
+    print(
+        f"success {result.success}, {result.false_successes} false successes, "
+        f"{result.sim_time:.1f} s simulated in {result.wall_time:.1f} s"
+    )
+    return result
 
 
 if __name__ == "__main__":
-    main()
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seed", type=int, default=0, help="seed of the simulated world")
+    main(parser.parse_args().seed)

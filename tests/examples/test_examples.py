@@ -77,14 +77,22 @@ def test_step_by_step(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_plan_route(capsys: pytest.CaptureFixture[str]) -> None:
-    plan = example_main("plan_route")()
-    steps = [s.primitive for s in plan.steps]
-    assert steps[0] == "single_arm_tension"
-    assert [s.params.get("clip") for s in plan.steps if s.primitive == "single_arm_clipping"] == [
-        "C1",
-        "C2",
-    ]
-    assert steps.count("rotate_around_feature_point") == 1
+    result = example_main("plan_route")(0)
     out = capsys.readouterr().out
-    assert "the planned task validates: 17 steps" in out
-    assert "a 0.40 m cable: cable W1, route entry" in out
+    assert "the planned task validates: 4 steps" in out
+    # the planner's task ran to its end: tension, the move over the clip, G, F
+    assert [s["primitive"] for s in result.steps] == [
+        "single_arm_tension",
+        "move",
+        "gripper_alignment",
+        "single_arm_clipping",
+    ]
+    assert all(s["outcome"] == "success" for s in result.steps), result.steps
+    # every success is one the simulator agrees with, and the route is truly done
+    assert result.false_successes == 0, [s["truth"] for s in result.steps]
+    assert all(s["truth"]["agrees"] for s in result.steps)
+    (w1,) = result.cables
+    assert w1["route_done"] is True
+    assert w1["route_truth"]["agrees"], w1["route_truth"]
+    assert result.success
+    assert "cable W1: route_done True; the simulator agrees: C1: in its jaws" in out
