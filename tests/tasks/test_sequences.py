@@ -120,3 +120,19 @@ def test_c_after_h_turns_the_pair_onto_the_slot_and_clips() -> None:
     _all_true(result)
     assert "is in the jaws of C1" in result.steps[2]["truth"]["detail"]
     assert result.steps[2]["max_force"] < 12.0
+
+
+@pytest.mark.slow
+def test_clip_then_slide_then_turn_about_the_clip() -> None:
+    # after F the clip is the cable's last fixed point: E slides out cable
+    # beyond it, D pulls against it, I turns the cable about it
+    result = _after(
+        "F",
+        [
+            {"primitive": "E", "arm": "left", "distance": 0.03, "friction_force": 1.5},
+            {"primitive": "D", "arm": "left", "force": 3.0},
+            {"primitive": "I", "arm": "left", "angle": 0.5, "about": "C1"},
+        ],
+    )
+    _all_true(result)
+    assert "against C1" in result.steps[3]["truth"]["detail"]
