@@ -62,7 +62,7 @@ from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     contact_point_least_squares,
 )
-from tautwire.estimation.force_line import line_offset, line_offset_variance
+from tautwire.estimation.force_line import MIN_FORCE, line_offset_variance
 from tautwire.estimation.weight_compensation import compensate_weight
 from tautwire.model.tension import G as GRAVITY_ABS
 
@@ -78,6 +78,31 @@ DEFAULT_PROCESS_NOISE = 1e-9
 RADIUS_PROCESS_NOISE = 1e-10
 #: Default angular spread [rad] of the first samples before the first estimate.
 DEFAULT_INIT_SPREAD = math.radians(10.0)
+
+
+_FLOAT64 = np.dtype(np.float64)
+
+
+def _floats3(v: ArrayLike) -> list[float]:
+    """A 3-vector as three Python floats."""
+    if type(v) is np.ndarray and v.dtype is _FLOAT64 and v.shape == (3,):
+        fast: list[float] = v.tolist()
+        return fast
+    out: list[float] = np.asarray(v, dtype=float).reshape(3).tolist()
+    return out
+
+
+def _finite3(a: float, b: float, c: float) -> bool:
+    """All three are finite (0 x is NaN for an infinite or NaN x, 0 otherwise)."""
+    return math.isfinite(0.0 * a + 0.0 * b + 0.0 * c)
+
+
+def _unit_outer(f: FloatArray) -> tuple[float, ...]:
+    """The outer product u u' of u = f / |f| (uxx, uxy, uxz, uyy, uyz, uzz)."""
+    fx, fy, fz = f.tolist()
+    n = math.sqrt(fx * fx + fy * fy + fz * fz)
+    ux, uy, uz = fx / n, fy / n, fz / n
+    return (ux * ux, ux * uy, ux * uz, uy * uy, uy * uz, uz * uz)
 
 
 class ContactPointUpdate(NamedTuple):
@@ -218,6 +243,10 @@ class ContactPointFilter:
         self._count = 0
         # (line point, raw force, line offset variance) of each sample
         self._buffer: deque[tuple[FloatArray, FloatArray, float]] = deque(maxlen=init_max_samples)
+        # u u' (uxx, uxy, uxz, uyy, uyz, uzz) of each buffered force direction, their sum
+        self._uu: deque[tuple[float, ...]] = deque(maxlen=init_max_samples)
+        self._uu_sum = [0.0] * 6
+        self._uu_dropped = 0  # samples dropped from the buffer since the sum was made afresh
         self._recent: deque[tuple[int, FloatArray, FloatArray, float]] = deque(
             maxlen=self.detector.window
         )
@@ -318,11 +347,23 @@ class ContactPointFilter:
             return self.edge_length
         return float(np.linalg.norm(p - self.x)) if self.running else 0.0
 
-    def _result(self, changed: bool, nis: float | None, used: bool) -> ContactPointUpdate:
+    def _result(
+        self,
+        changed: bool,
+        nis: float | None,
+        used: bool,
+        variances: tuple[float, float, float] | None = None,
+    ) -> ContactPointUpdate:
+        """The update's result; ``variances``: diag(P) [m^2] when the caller has it."""
         if not self.running:
             return ContactPointUpdate(None, None, None, changed, nis, used)
         P = self.P.copy()
-        return ContactPointUpdate(self.x.copy(), P, np.sqrt(np.diag(P)), changed, nis, used)
+        v0, v1, v2 = P.diagonal().tolist() if variances is None else variances
+        if v0 >= 0.0 and v1 >= 0.0 and v2 >= 0.0:  # not NaN, not negative
+            std = np.array((math.sqrt(v0), math.sqrt(v1), math.sqrt(v2)))
+        else:
+            std = np.sqrt(P.diagonal())  # NaN where a variance is not >= 0
+        return ContactPointUpdate(self.x.copy(), P, std, changed, nis, used)
 
     def batch(
         self,
@@ -383,11 +424,44 @@ class ContactPointFilter:
                 )
         return res
 
+    def _buffer_sample(self, p: FloatArray, f_raw: FloatArray, v_offset: float) -> None:
+        """Buffer a sample before the first estimate; keep the sum of u u' of its direction.
+
+        The sum over the buffer (``self._uu_sum``: uxx, uxy, uxz, uyy, uyz,
+        uzz) is kept up to date as samples enter and leave the bounded
+        buffer, and summed afresh each time the buffer has turned over (so
+        that rounding errors of the running sum cannot accumulate).
+        """
+        if len(self._uu) != len(self._buffer):  # the buffer was cleared
+            self._uu.clear()
+            for _, f, _ in self._buffer:
+                self._uu.append(_unit_outer(f))
+            self._uu_sum = [math.fsum(c) for c in zip(*self._uu, strict=True)] or [0.0] * 6
+            self._uu_dropped = 0
+        outer = _unit_outer(f_raw)
+        total = self._uu_sum
+        if len(self._buffer) == self._buffer.maxlen:
+            for i, v in enumerate(self._uu[0]):  # the oldest sample leaves
+                total[i] -= v
+            self._uu_dropped += 1
+        self._buffer.append((p, f_raw, v_offset))
+        self._uu.append(outer)
+        for i, v in enumerate(outer):
+            total[i] += v
+        if self._uu_dropped >= len(self._uu):
+            self._uu_sum = [math.fsum(c) for c in zip(*self._uu, strict=True)]
+            self._uu_dropped = 0
+
     def _try_initialise(self) -> bool:
-        if len(self._buffer) < 3:
+        n = len(self._buffer)
+        if n < 3:
             return False
-        u = np.array([f / np.linalg.norm(f) for _, f, _ in self._buffer])  # (N, 3)
-        lam = float(np.linalg.eigvalsh(np.eye(3) - (u.T @ u) / u.shape[0])[0])
+        # mean of u u' over the buffered unit force directions u (_buffer_sample)
+        uu00, uu01, uu02, uu11, uu12, uu22 = (v / n for v in self._uu_sum)
+        M = np.array(
+            [[1.0 - uu00, -uu01, -uu02], [-uu01, 1.0 - uu11, -uu12], [-uu02, -uu12, 1.0 - uu22]]
+        )
+        lam = float(np.linalg.eigvalsh(M)[0])
         spread = 2.0 * math.asin(math.sqrt(min(max(lam, 0.0), 1.0)))
         if spread < self.init_spread:
             return False
@@ -578,18 +652,28 @@ class ContactPointFilter:
         """
         index = self._count
         self._count += 1
-        p = np.array(p_gripper, dtype=float).reshape(3)
-        f_raw = np.array(f_sens, dtype=float).reshape(3)
+        # Python floats, not small numpy arrays: a 3x3 update in numpy spends
+        # most of its time in call overhead (bench/force_log.py); the numpy
+        # arrays x and P stay the public state
+        px, py, pz = _floats3(p_gripper)
+        fx, fy, fz = _floats3(f_sens)
         v_offset = 0.0  # variance [m^2] of the line's offset from p_g
-        finite = bool(np.all(np.isfinite(p)) and np.all(np.isfinite(f_raw)))
+        finite = _finite3(px, py, pz) and _finite3(fx, fy, fz)
         if torque is not None and finite:
-            tau = np.asarray(torque, dtype=float).reshape(3)
-            if np.all(np.isfinite(tau)):
-                offset = line_offset(f_raw, tau)
-                p = p + offset
+            tx, ty, tz = _floats3(torque)
+            if _finite3(tx, ty, tz):
+                # o = (f x tau) / |f|^2 (force_line.line_offset), its variance
+                f2 = fx * fx + fy * fy + fz * fz
+                if f2 > MIN_FORCE * MIN_FORCE and math.isfinite(f2):
+                    ox = (fy * tz - fz * ty) / f2
+                    oy = (fz * tx - fx * tz) / f2
+                    oz = (fx * ty - fy * tx) / f2
+                else:
+                    ox = oy = oz = 0.0
+                px, py, pz = px + ox, py + oy, pz + oz
                 v_offset = line_offset_variance(
-                    float(np.linalg.norm(f_raw)),
-                    float(np.linalg.norm(offset)),
+                    math.sqrt(f2),
+                    math.sqrt(ox * ox + oy * oy + oz * oz),
                     self.force_noise,
                     self.torque_noise,
                 )
@@ -599,14 +683,20 @@ class ContactPointFilter:
             if self.running:
                 self.P += self.Q  # P = F P F' + Q (time passes, nothing measured)
             return self._result(False, None, False)
-        fx, fy, fz = f_raw.tolist()
+        f_raw = (fx, fy, fz)
+        x0, x1, x2 = self.x.tolist() if self.running else (0.0, 0.0, 0.0)
+        dx, dy, dz = px - x0, py - x1, pz - x2
+        if self.edge_length is not None:
+            span = self.edge_length
+        else:
+            span = math.sqrt(dx * dx + dy * dy + dz * dz) if self.running else 0.0
         if self.mass_per_length > 0.0 and self.running:
             # f = f_sens - m_g g with m_g = rho d / 2 (eq:mass, equ:edge_tension)
-            fz += 0.5 * self.mass_per_length * self._span(p) * GRAVITY_ABS
+            fz += 0.5 * self.mass_per_length * span * GRAVITY_ABS
         fn = math.sqrt(fx * fx + fy * fy + fz * fz)
         if not self.running:
             if fn >= self.min_tension and math.isfinite(fn):
-                self._buffer.append((p, f_raw, v_offset))
+                self._buffer_sample(np.array([px, py, pz]), np.array(f_raw), v_offset)
                 self._try_initialise()
             return self._result(False, None, False)
         if fn < self.min_tension or not math.isfinite(fn):
@@ -618,46 +708,86 @@ class ContactPointFilter:
         sign = 1.0 if z_ >= 0.0 else -1.0
         a = -1.0 / (sign + z_)
         b = x_ * y_ * a
-        H = np.array(
-            [[1.0 + sign * x_ * x_ * a, sign * b, -sign * x_], [b, sign + y_ * y_ * a, -y_]]
-        )
-        d = max(self._span(p), self.min_distance)
+        h00, h01, h02 = 1.0 + sign * x_ * x_ * a, sign * b, -sign * x_  # H, first row
+        h10, h11, h12 = b, sign + y_ * y_ * a, -y_  # H, second row
+        d = max(span, self.min_distance)
         r = d * self.force_noise / fn
         r2 = r * r + self.position_noise * self.position_noise + v_offset  # R = r^2 I
 
         if side is not None and self.radius is not None:
+            H = np.array([[h00, h01, h02], [h10, h11, h12]])
             f_chord = np.array([fx, fy, fz])
-            return self._update_round(index, p, f_raw, f_chord, H, r2, side, v_offset)
-        P = self.P + self.Q  # P = F P F' + Q  (F = I: x = F x is x)
-        y = H @ (p - self.x)  # y = z - H x,  z = H p_g
-        PHt = P @ H.T  # (3, 2)
-        S = H @ PHt  # S = H P H' + R  (R added on the diagonal below)
-        s00 = float(S[0, 0]) + r2
-        s01 = float(S[0, 1])
-        s11 = float(S[1, 1]) + r2
+            p = np.array([px, py, pz])
+            return self._update_round(index, p, np.array(f_raw), f_chord, H, r2, side, v_offset)
+        # P = F P F' + Q  (F = I: x = F x is x)
+        (p00, p01, p02), (p10, p11, p12), (p20, p21, p22) = self.P.tolist()
+        (q00, q01, q02), (q10, q11, q12), (q20, q21, q22) = self.Q.tolist()
+        p00, p01, p02 = p00 + q00, p01 + q01, p02 + q02
+        p10, p11, p12 = p10 + q10, p11 + q11, p12 + q12
+        p20, p21, p22 = p20 + q20, p21 + q21, p22 + q22
+        y0 = h00 * dx + h01 * dy + h02 * dz  # y = z - H x,  z = H p_g
+        y1 = h10 * dx + h11 * dy + h12 * dz
+        c00 = p00 * h00 + p01 * h01 + p02 * h02  # P H'  (3, 2)
+        c10 = p10 * h00 + p11 * h01 + p12 * h02
+        c20 = p20 * h00 + p21 * h01 + p22 * h02
+        c01 = p00 * h10 + p01 * h11 + p02 * h12
+        c11 = p10 * h10 + p11 * h11 + p12 * h12
+        c21 = p20 * h10 + p21 * h11 + p22 * h12
+        s00 = h00 * c00 + h01 * c10 + h02 * c20 + r2  # S = H P H' + R
+        s01 = h00 * c01 + h01 * c11 + h02 * c21
+        s11 = h10 * c01 + h11 * c11 + h12 * c21 + r2
         det = s00 * s11 - s01 * s01
-        y0, y1 = float(y[0]), float(y[1])
         nis = (s11 * y0 * y0 - 2.0 * s01 * y0 * y1 + s00 * y1 * y1) / det  # NIS = y' S^-1 y
 
         if self.detect_changes:
             test = self.detector.test(index, nis, math.hypot(y0, y1))
             if test.gated:
-                self.P = P
-                self._recent.append((index, p, f_raw, v_offset))
+                P_pred = [[p00, p01, p02], [p10, p11, p12], [p20, p21, p22]]
+                self.P = np.array(P_pred)
+                p = np.array([px, py, pz])
+                self._recent.append((index, p, np.array(f_raw), v_offset))
                 if test.changed and test.first_gated is not None:
-                    f_chord = np.array([fx, fy, fz])
-                    self._restart(test.first_gated, p, f_chord)
+                    self._restart(test.first_gated, p, np.array([fx, fy, fz]))
                     self.changes.append(index)
                     return self._result(True, nis, True)
                 return self._result(False, nis, False)
             self._recent.clear()
 
-        SI = np.array([[s11, -s01], [-s01, s00]]) / det  # S^-1
-        K = PHt @ SI  # K = P H' S^-1
-        self.x = self.x + K @ y  # x = x + K y
-        I_KH = np.eye(3) - K @ H
-        self.P = I_KH @ P @ I_KH.T + r2 * (K @ K.T)  # P = (I - K H) P (I - K H)' + K R K'
-        return self._result(False, nis, True)
+        i00, i01, i11 = s11 / det, -s01 / det, s00 / det  # S^-1
+        k00, k01 = c00 * i00 + c01 * i01, c00 * i01 + c01 * i11  # K = P H' S^-1
+        k10, k11 = c10 * i00 + c11 * i01, c10 * i01 + c11 * i11
+        k20, k21 = c20 * i00 + c21 * i01, c20 * i01 + c21 * i11
+        x0 += k00 * y0 + k01 * y1  # x = x + K y
+        x1 += k10 * y0 + k11 * y1
+        x2 += k20 * y0 + k21 * y1
+        a00 = 1.0 - (k00 * h00 + k01 * h10)  # A = I - K H
+        a01 = -(k00 * h01 + k01 * h11)
+        a02 = -(k00 * h02 + k01 * h12)
+        a10 = -(k10 * h00 + k11 * h10)
+        a11 = 1.0 - (k10 * h01 + k11 * h11)
+        a12 = -(k10 * h02 + k11 * h12)
+        a20 = -(k20 * h00 + k21 * h10)
+        a21 = -(k20 * h01 + k21 * h11)
+        a22 = 1.0 - (k20 * h02 + k21 * h12)
+        b00 = a00 * p00 + a01 * p10 + a02 * p20  # A P
+        b01 = a00 * p01 + a01 * p11 + a02 * p21
+        b02 = a00 * p02 + a01 * p12 + a02 * p22
+        b10 = a10 * p00 + a11 * p10 + a12 * p20
+        b11 = a10 * p01 + a11 * p11 + a12 * p21
+        b12 = a10 * p02 + a11 * p12 + a12 * p22
+        b20 = a20 * p00 + a21 * p10 + a22 * p20
+        b21 = a20 * p01 + a21 * p11 + a22 * p21
+        b22 = a20 * p02 + a21 * p12 + a22 * p22
+        # P = (I - K H) P (I - K H)' + K R K'  (Joseph form; symmetric: upper triangle)
+        n00 = b00 * a00 + b01 * a01 + b02 * a02 + r2 * (k00 * k00 + k01 * k01)
+        n01 = b00 * a10 + b01 * a11 + b02 * a12 + r2 * (k00 * k10 + k01 * k11)
+        n02 = b00 * a20 + b01 * a21 + b02 * a22 + r2 * (k00 * k20 + k01 * k21)
+        n11 = b10 * a10 + b11 * a11 + b12 * a12 + r2 * (k10 * k10 + k11 * k11)
+        n12 = b10 * a20 + b11 * a21 + b12 * a22 + r2 * (k10 * k20 + k11 * k21)
+        n22 = b20 * a20 + b21 * a21 + b22 * a22 + r2 * (k20 * k20 + k21 * k21)
+        self.x = np.array((x0, x1, x2))
+        self.P = np.array((n00, n01, n02, n01, n11, n12, n02, n12, n22)).reshape(3, 3)
+        return self._result(False, nis, True, (n00, n11, n22))
 
     def _update_round(
         self,
