@@ -658,7 +658,8 @@ class ContactPointFilter:
         px, py, pz = _floats3(p_gripper)
         fx, fy, fz = _floats3(f_sens)
         v_offset = 0.0  # variance [m^2] of the line's offset from p_g
-        finite = _finite3(px, py, pz) and _finite3(fx, fy, fz)
+        # all finite (0 v is NaN for an infinite or NaN v, 0 otherwise)
+        finite = math.isfinite(0.0 * px + 0.0 * py + 0.0 * pz + 0.0 * fx + 0.0 * fy + 0.0 * fz)
         if torque is not None and finite:
             tx, ty, tz = _floats3(torque)
             if _finite3(tx, ty, tz):
