@@ -108,3 +108,23 @@ def test_inconsistent_error_names_sensor_bias() -> None:
     assert ModelInconsistentError.cause == "sensor_bias"
     with pytest.raises(ModelInconsistentError):
         raise ModelInconsistentError("x")
+
+
+def test_lines_not_observed_leave_the_contact_estimate_alone() -> None:
+    # a primitive pressing the cable over a fixture the model lacks turns the
+    # contact filter off: the same circle's lines then change nothing
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=3)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    before = ctx.estimator.contact_filter.snapshot()
+    ctx.estimator.observe_contacts = False
+    robot_obs = robot.observe()
+    for _ in range(200):
+        ctx.estimator.update(robot_obs)
+    after = ctx.estimator.contact_filter.snapshot()
+    assert after.running == before.running
+    np.testing.assert_array_equal(after.x, before.x)
+    # and a primitive's start turns it on again
+    report = run_step(robot, RotateAroundFeaturePoint("left", math.pi, speed=0.5), ctx)
+    assert report.success and ctx.estimator.observe_contacts
+    assert _contact_error(ctx) < 0.003

@@ -263,6 +263,13 @@ class ModelEstimator:
         #: across it (rotating) turn it off: there the length hardly changes
         #: and what changes is mostly the contact estimate's drift.
         self.learn_elasticity = True
+        #: Whether the contact filter takes lines now. A primitive that presses
+        #: the cable over a fixture the model does not have yet (F into its clip)
+        #: turns it off: its lines bend over that fixture, not the contact
+        #: (Table I F:12: the anchor, unseen by D's parallel lines, was started
+        #: from F's lines 15 mm off at a reported 1.8 mm). Every primitive
+        #: starts with it on (:meth:`Primitive.start`).
+        self.observe_contacts = True
         self.round_fixtures = dict(round_fixtures or {})
         #: (axis, sense) of a rotation in progress (primitive I), else None.
         self.rotation: tuple[FloatArray, float] | None = None
@@ -586,6 +593,10 @@ class ModelEstimator:
         self._n = 0
         self._window_start = None
         kf = self.contact_filter
+        if not self.observe_contacts:
+            kf.predict()  # time passes, nothing is observed
+            self._iteration_time = None
+            return False
         peg = self._round_contact()
         previous_time, self._iteration_time = self._iteration_time, time
         point = self._filter_point

@@ -40,6 +40,7 @@ class Primitive(ABC):
         self.start_time = obs.time
         self.elapsed = 0.0
         self.outcome = RUNNING
+        ctx.estimator.observe_contacts = True  # a primitive may turn it off in on_start
         self.on_start(obs, ctx)
 
     def step(self, obs: Observation) -> Command:

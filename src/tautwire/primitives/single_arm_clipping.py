@@ -93,6 +93,8 @@ class SingleArmClipping(Primitive):
         info = ctx.clips.get(self.clip)
         ctx.estimator.learn_elasticity = False
         ctx.estimator.rotation = None
+        # its lines bend over the clip it presses into, not the contact
+        ctx.estimator.observe_contacts = False
         self.phase = "align"
         self.angle = 0.0
         self._angle0 = 0.0
