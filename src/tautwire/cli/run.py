@@ -75,7 +75,7 @@ def run(
     The robot works blind, from its wrist force sensor; afterwards the
     simulator's truth scores every step and contact estimate.
     """
-    from tautwire.experiments.run_scenario import run_scenario, write_result
+    from tautwire.experiments.run_scenario import run_scenario, task_of, write_result
     from tautwire.sim.world import SimWorld
     from tautwire.tasks import StepReport, TickRecord
     from tautwire.viz.run_trace import RunTrace
@@ -111,13 +111,14 @@ def run(
             rerun.tick(rec)
 
     try:
+        steps = len(task_of(scenario))  # a planned task when the scenario has routes only
         with err.status(f"simulating {scenario.name} ...") as status:
 
             def on_step(i: int, report: StepReport) -> None:
                 trace.step(i, report)
                 if rerun is not None:
                     rerun.step(i, report)
-                status.update(f"simulating {scenario.name}: step {i + 2} of {len(scenario.task)}")
+                status.update(f"simulating {scenario.name}: step {i + 2} of {steps}")
 
             def on_truth(truth: Any) -> None:
                 trace.keep_truth(truth)
