@@ -100,7 +100,7 @@ class ForceBiasMonitor:
         self._t: list[float] = []
         self._f: list[FloatArray] = []
         self._fits: deque[tuple[FloatArray, FloatArray]] = deque(maxlen=windows)
-        #: The estimate that :meth:`drifting` last found beyond its bounds.
+        #: The estimate found beyond its bounds when the last window closed (None: none).
         self.drift: BiasEstimate | None = None
 
     def reset(self) -> None:
@@ -108,6 +108,7 @@ class ForceBiasMonitor:
         self._t.clear()
         self._f.clear()
         self._fits.clear()
+        self.drift = None
 
     def add(self, time: float, force: ArrayLike) -> None:
         """Add one sample: the force [N] the cable exerts, world frame, weight compensated.
@@ -126,6 +127,7 @@ class ForceBiasMonitor:
             fit = fit_window(np.array(self._t), np.array(self._f))
             if fit is not None:
                 self._fits.append(fit)
+                self.drift = self._beyond_bounds()
             self._t.clear()
             self._f.clear()
 
@@ -152,20 +154,23 @@ class ForceBiasMonitor:
         return BiasEstimate(bias, std, len(fits))
 
     def drifting(self) -> bool:
-        """Whether the last 1, 2, ... windows' bias exceeds ``threshold`` and ``sigmas`` std.
+        """Whether the bias was beyond its bounds when the last window closed (:attr:`drift`)."""
+        return self.drift is not None
+
+    def _beyond_bounds(self) -> BiasEstimate | None:
+        """The bias of the last 1, 2, ... windows that exceeds ``threshold`` and ``sigmas`` std.
 
         A drift that began lately shows in the last windows first: combined
-        with the windows before it, it would be diluted. The estimate that
-        exceeded is kept in :attr:`drift`.
+        with the windows before it, it would be diluted. Judged once a window,
+        when it closes, not every sample.
         """
         for last in range(1, len(self._fits) + 1):
             est = self.estimate(last)
             assert est is not None
             size = float(np.linalg.norm(est.bias))
             if size > self.threshold and size > self.sigmas * est.std:
-                self.drift = est
-                return True
-        return False
+                return est
+        return None
 
 
 def fit_window(times: ArrayLike, forces: ArrayLike) -> tuple[FloatArray, FloatArray] | None:

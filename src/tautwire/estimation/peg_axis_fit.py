@@ -71,7 +71,8 @@ class PegAxisFit:
         self._n_w = np.zeros(2)  # sum w n  (for dc/dR)
         self._w = 0.0  # sum w
         self.count = 0
-        self._angles: list[float] = []
+        self._angle: float | None = None  # the last line's direction, unwrapped [rad]
+        self._angle_range = (0.0, 0.0)  # (smallest, largest) unwrapped direction [rad]
 
     def add(self, point: ArrayLike, force: ArrayLike, side: ArrayLike, variance: float) -> None:
         """Add one line: a point [m] on it, the force [N] along it, its normal towards the axis.
@@ -105,15 +106,19 @@ class PegAxisFit:
         self._w += w
         self.count += 1
         angle = math.atan2(float(u[1]), float(u[0]))
-        if self._angles:
-            prev = self._angles[-1]
-            angle = prev + math.remainder(angle - prev, 2.0 * math.pi)
-        self._angles.append(angle)
+        if self._angle is None:
+            self._angle_range = (angle, angle)
+        else:
+            angle = self._angle + math.remainder(angle - self._angle, 2.0 * math.pi)
+            lo, hi = self._angle_range
+            self._angle_range = (min(lo, angle), max(hi, angle))
+        self._angle = angle
 
     @property
     def spread(self) -> float:
         """Range [rad] of the lines' directions so far."""
-        return max(self._angles) - min(self._angles) if self._angles else 0.0
+        lo, hi = self._angle_range
+        return hi - lo
 
     def estimate(self, height_point: ArrayLike) -> tuple[FloatArray, FloatArray] | None:
         """The axis's point at the height of ``height_point`` and its covariance, or None.
