@@ -68,3 +68,55 @@ def test_slack_cable_fails_with_slipped() -> None:
     robot.rest += 1.0  # the cable suddenly slips through the fixture
     report = run_step(robot, RotateAroundFeaturePoint("left", math.pi, speed=0.5), ctx)
     assert report.outcome == "failure" and report.cause in ("slipped", "timeout")
+
+
+def test_the_turn_counted_is_the_grippers_about_the_contact() -> None:
+    # the span from a point contact turns as the gripper does: at success the
+    # gripper's own angle about the true contact is the angle asked, to what
+    # the estimate's error e at the radius r can do (about e / r) and a period
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=7)
+    ctx = tensioned(robot)
+    a0 = robot.p[:2] - CONTACT[:2]
+    report = run_step(robot, RotateAroundFeaturePoint("left", 1.2, speed=0.5), ctx)
+    assert report.success
+    a1 = robot.p[:2] - CONTACT[:2]
+    true_turn = math.atan2(a0[0] * a1[1] - a0[1] * a1[0], float(a0 @ a1))
+    estimate = ctx.estimator.contact_position()
+    assert estimate is not None
+    e = float(np.linalg.norm(estimate[:2] - CONTACT[:2]))
+    r = float(np.linalg.norm(a1))
+    assert abs(true_turn - 1.2) < 1.5 * e / r + math.radians(0.5)
+
+
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_a_pegs_span_turns_with_its_tangent(sense: float) -> None:
+    # the gripper spirals in about a peg of radius R: the span's direction
+    # (tangent point to gripper) turns by the gripper's angle plus the change
+    # of s asin(R / D); the count follows it, not the gripper's angle alone
+    centre = np.array([0.1, 0.2, 0.0])
+    radius = 0.02
+    primitive = RotateAroundFeaturePoint("left", 2.0)
+    primitive.turned = 0.0
+    primitive._previous = None
+    bend = (np.array([0.0, 0.0, 1.0]), sense, radius)
+
+    def span_angle(phi: float, distance: float) -> float:
+        return phi + sense * math.asin(radius / distance)
+
+    phis = np.linspace(0.0, 1.5, 200)
+    distances = np.linspace(0.30, 0.05, 200)
+    for phi, distance in zip(phis, distances, strict=True):
+        p = centre + distance * np.array([math.cos(phi), math.sin(phi), 0.0])
+        primitive._track_angle(p, centre, bend)
+    expected = span_angle(1.5, 0.05) - span_angle(0.0, 0.30)
+    assert primitive.turned == pytest.approx(expected, abs=1e-9)
+    # a jump of the estimate between periods adds no turn of the gripper's,
+    # only the change of the bend at the new distance
+    before = primitive.turned
+    p = centre + 0.05 * np.array([math.cos(1.5), math.sin(1.5), 0.0])
+    jumped = centre + np.array([0.01, -0.01, 0.0])
+    primitive._track_angle(p, jumped, bend)
+    primitive._track_angle(p, jumped, bend)
+    new_distance = float(np.linalg.norm((p - jumped)[:2]))
+    bend_change = sense * (math.asin(radius / new_distance) - math.asin(radius / 0.05))
+    assert primitive.turned == pytest.approx(before + bend_change, abs=1e-9)

@@ -979,6 +979,10 @@ class ModelEstimator:
             return self._add_contact(kf.x.copy(), p_g)
         return False
 
+    def round_contact(self) -> tuple[FloatArray, float, float] | None:
+        """(axis, sense, R [m]) while rotating about a round contact, else None (see below)."""
+        return self._round_contact()
+
     def _round_contact(self) -> tuple[FloatArray, float, float] | None:
         """(axis, sense, R) while rotating about a round contact of the design, else None.
 
