@@ -36,6 +36,7 @@ from tautwire.estimation.contact_point_least_squares import (
 )
 from tautwire.estimation.force_bias_monitor import ForceBiasMonitor
 from tautwire.estimation.force_line import line_offset_variance, line_point
+from tautwire.estimation.path_centre import PathCentre
 from tautwire.estimation.peg_axis_fit import PegAxisFit
 from tautwire.estimation.round_contact import (
     DESIGN_TOLERANCE,
@@ -62,6 +63,21 @@ SAME_CONTACT = 0.03
 
 #: Largest distance [m] between a fixture's design position and a trusted estimate of it.
 DESIGN_GATE = 0.03
+#: Period [s] at which a circling gripper's path is sampled for the centre it circles.
+PATH_PERIOD = 0.04
+#: Std floor [m] of the path's centre (the span's sag and wobble as it turns).
+PATH_FLOOR = 5e-4
+#: Stds apart beyond which the path's centre and the force's estimate are
+#: not fused; beyond :data:`PATH_CONFLICT` as well, they contradict each other.
+PATH_GATE = 5.0
+PATH_CONFLICT = 8.0
+#: Systematic direction error [rad] of a point contact's lines that samples do
+#: not average out (the moving cable's drag, sag and weight compensation): at
+#: the distance d it puts the lines' estimate d times this off. Measured on
+#: robustness trials 20, 53, 71, 72, 97 (anchors 0.45-0.98 m away, circled
+#: 54-83 deg): 3.4-7.0 mm off, 4-8 mrad; added to the lines' covariance where
+#: the path's centre is fused with it.
+SYSTEMATIC_LINE_ANGLE = 4e-3
 #: How well [m] a contact must be known: a point (an anchor, a clip) to 3 mm; a
 #: peg to 3 mm more than its radius (where on its circle the cable leaves
 #: changes as it wraps).
@@ -291,6 +307,15 @@ class ModelEstimator:
         #: and the (label, sense) it is for; None while no peg is circled.
         self._peg_fit: PegAxisFit | None = None
         self._peg_fit_for: tuple[str, float] | None = None
+        #: The circling gripper's path (:mod:`~tautwire.estimation.path_centre`)
+        #: about a point contact, the (point, rotation) it is for, the time of
+        #: its last sample, and its estimate as of a sample count.
+        self._path: PathCentre | None = None
+        self._path_for: tuple[int, int] | None = None
+        self._path_time: float | None = None
+        self._path_estimate: tuple[FloatArray, FloatArray] | None = None
+        self._path_count = 0
+        self._path_axis = np.array([0.0, 0.0, 1.0])
         #: Watches the pull's direction against its size for a drifting sensor bias.
         self.bias_monitor = ForceBiasMonitor(min_tension=taut_tension, windows=3)
         # the last filter samples (mean gripper position, mean raw force)
@@ -364,6 +389,7 @@ class ModelEstimator:
             )
             <= self.trust_limit() ** 2
             and self._agrees_with_design()
+            and self._agrees_with_path(accepted.x)
         ):
             return accepted.x.copy()
         return point.position.copy()
@@ -389,6 +415,7 @@ class ModelEstimator:
             self._largest_variance(accepted._replace(P=accepted.P + tail))
             <= self.trust_limit() ** 2
             and self._agrees_with_design()
+            and self._agrees_with_path(accepted.x)
         )
         return ContactEstimate(
             accepted.x.copy(), accepted.P + floor**2 * np.eye(3) + tail, accepted.radius, trusted
@@ -426,7 +453,7 @@ class ModelEstimator:
         state = kf.snapshot()
         fit = None if self._peg_fit is None else self._peg_fit.estimate(state.x)
         if fit is None:
-            return state
+            return self._with_path(state)
         # a circled peg: its axis from the batch over every line, normal to
         # the axis; where along it the cable bears from the filter
         assert self._peg_fit is not None
@@ -434,6 +461,115 @@ class ModelEstimator:
         along = np.outer(a, a)
         P = fit[1] + along @ state.P @ along
         return state._replace(x=fit[0], P=P)
+
+    def _sample_path(self, time: float, p_gripper: FloatArray, tension: float) -> None:
+        """Add the circling gripper's position to the path about a point contact.
+
+        Every :data:`PATH_PERIOD`; a new path for each point and rotation. The
+        path's centre, once it has one, is checked against the force's
+        estimate here (see :meth:`_with_path`).
+
+        Raises:
+            ModelInconsistentError: when the two are more than
+                :data:`PATH_CONFLICT` stds and twice the contact tolerance
+                apart: the force's lines meet where the gripper's circle
+                does not turn about (a drifting force-sensor bias tilts them).
+        """
+        point = self._filter_point
+        if self.rotation is None or point is None or point.label in self.round_fixtures:
+            return
+        if self._pending is not None:
+            return  # a contact change under test: whose centre it circles is open
+        key = (id(point), id(self.rotation))
+        if self._path is None or self._path_for != key:
+            k = self.elasticity.k_trusted
+            self._path = PathCentre(self.rotation[0], 0.0, self.rotation[1], k)
+            self._path_for = key
+            self._path_axis = self.rotation[0] / norm3(self.rotation[0])
+            self._path_time = None
+            self._path_estimate = None
+            self._path_count = 0
+        if self._path_time is not None and time - self._path_time < PATH_PERIOD - 1e-9:
+            return
+        self._path_time = time
+        self._path.add(p_gripper, tension)
+        if self._path.count - self._path_count < 5:
+            return
+        self._path_count = self._path.count
+        kf = self.contact_filter
+        estimate = self._path.estimate(kf.x)
+        if estimate is not None:
+            centre, cov = estimate
+            cov = cov + PATH_FLOOR**2 * _plane_projector(self._path_axis)
+            estimate = (centre, cov)
+        self._path_estimate = estimate
+        if estimate is None:
+            return
+        d, m = self._path_disagreement(kf.x, kf.P, estimate)
+        if m > PATH_CONFLICT and d > 2.0 * CONTACT_TOLERANCE:
+            raise ModelInconsistentError(
+                f"the gripper circles a centre {1e3 * d:.1f} mm ({m:.1f} std) from where the"
+                " force's lines meet: a drifting force-torque sensor bias tilts them"
+            )
+
+    def _path_disagreement(
+        self, x: FloatArray, P: FloatArray, path: tuple[FloatArray, FloatArray]
+    ) -> tuple[float, float]:
+        """Distance [m] in the rotation's plane between ``x`` and the path's centre, and in stds."""
+        axis = self._path_axis
+        proj = _plane_projector(axis)
+        d = proj @ (x - path[0])
+        S = proj @ (P + path[1]) @ proj + np.outer(axis, axis)
+        m = math.sqrt(max(float(d @ np.linalg.solve(S, d)), 0.0))
+        return norm3(d), m
+
+    def _agrees_with_path(self, x: FloatArray) -> bool:
+        """Whether ``x`` lies within the contact tolerance of the path's centre, where it tells.
+
+        The path's centre tells once its largest std in the plane is within
+        the tolerance; before (or without a path), True. A fused estimate
+        still leans on the force's lines, whose covariance can be too small
+        for a far point circled over a short arc (robustness trial 97: the
+        lines' estimate 4.4 mm off at a 1.4 mm std, the path's centre 2.7 mm
+        off at 3.3 mm, the fused 4.1 mm off and trusted).
+        """
+        path = self._path_estimate
+        if path is None or self._pending is not None:
+            return True
+        if math.sqrt(max(float(np.linalg.eigvalsh(path[1]).max()), 0.0)) > CONTACT_TOLERANCE:
+            return True
+        d, _ = self._path_disagreement(x, np.zeros((3, 3)), path)
+        return d <= CONTACT_TOLERANCE
+
+    def _with_path(self, state: FilterState) -> FilterState:
+        """``state`` fused with the circling gripper's path centre, where the two agree.
+
+        In the rotation's plane the centre the gripper's own path turns about
+        (:class:`~tautwire.estimation.path_centre.PathCentre`) is independent
+        of the force's direction; the two are combined by their information.
+        Along the axis the force's estimate stays. The path's information
+        stays with the point after the rotation (the fixture does not move).
+        """
+        path = self._path_estimate
+        if path is None or self._path is None or self._pending is not None:
+            return state
+        point = self._filter_point
+        if point is None or point.label in self.round_fixtures:
+            return state
+        p_g = self._gripper_positions.get(self.arm)
+        distance = 0.0 if p_g is None else norm3(state.x - p_g)
+        axis = self._path_axis
+        proj = _plane_projector(axis)
+        P_lines = state.P + (SYSTEMATIC_LINE_ANGLE * distance) ** 2 * proj
+        _, m = self._path_disagreement(state.x, P_lines, path)
+        if m > PATH_GATE:
+            return state
+        C = proj @ path[1] @ proj + np.outer(axis, axis)  # regular: nothing along the axis
+        info_path = proj @ np.linalg.inv(C) @ proj
+        info = np.linalg.inv(P_lines) + info_path
+        P = np.linalg.inv(info)
+        x = P @ (np.linalg.solve(P_lines, state.x) + info_path @ path[0])
+        return state._replace(x=x, P=0.5 * (P + P.T))
 
     def _watch_bias(self, time: float, f: FloatArray) -> None:
         """Feed the bias monitor the weight-compensated pull [N]; a drifting bias ends the step.
@@ -520,6 +656,7 @@ class ModelEstimator:
             self._pending = None
             self._peg_fit = None
             self._peg_fit_for = None
+            self._path = None
             self._filter_point = point
             self._design = None if point.label == "estimated" else point.position.copy()
             if self._design is not None and point.label in self.round_fixtures:
@@ -564,6 +701,7 @@ class ModelEstimator:
         tension = max(float(f @ direction), 0.0)
         if taut and self.rotation is not None and self.contact_filter.running:
             self._watch_bias(obs.time, f)  # I swings its tension: a bias shows
+            self._sample_path(obs.time, p_g, tension)
         if c is not None:
             # the cable length to the contact sets the filter's noise scale
             # (never the distance to its own estimate, which can collapse)
@@ -1090,3 +1228,9 @@ class ModelEstimator:
             edge = self.graph.edges[g - 1 if c < g else g]
             edge.tension = self.state.tension
             edge.stiffness = self.elasticity.k_hat
+
+
+def _plane_projector(axis: FloatArray) -> FloatArray:
+    """I - a a^T: the projector onto the plane normal to the unit ``axis``."""
+    out: FloatArray = np.eye(3) - np.outer(axis, axis)
+    return out
