@@ -407,8 +407,13 @@ class SimWorld:
         """(cable, vertex) that ``arm`` holds rigidly, or None."""
         return self._grippers[arm].held
 
-    def wrench(self, arm: Arm) -> tuple[FloatArray, FloatArray]:
+    def wrench(self, arm: Arm, copy: bool = True) -> tuple[FloatArray, FloatArray]:
         """Noise-free wrench on ``arm``'s gripper from the last physics step.
+
+        Args:
+            arm: The gripper.
+            copy: False returns the world's own arrays, which a reader must
+                not change (the sensor model, which only adds noise to them).
 
         Returns:
             Force [N] that the cable and the gripper's contacts exert on the
@@ -416,7 +421,7 @@ class SimWorld:
             point, world frame.
         """
         f, t = self._wrench[arm]
-        return f.copy(), t.copy()
+        return (f.copy(), t.copy()) if copy else (f, t)
 
     # ------------------------------------------------------------- commands
     def set_gripper(self, arm: Arm, command: GripperCommand) -> None:
@@ -448,12 +453,12 @@ class SimWorld:
 
     def set_twist(self, twist: FloatArray) -> None:
         """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] in [m/s, rad/s], shape (12,)."""
-        tw = np.asarray(twist, dtype=float)
+        tw = np.array(twist, dtype=float)  # the world's own copy, never changed in place
         values = tw.tolist()
         for k, arm in enumerate(ARMS):
             g = self._grippers[arm]
-            g.linear = tw[6 * k : 6 * k + 3].copy()
-            g.angular = tw[6 * k + 3 : 6 * k + 6].copy()
+            g.linear = tw[6 * k : 6 * k + 3]
+            g.angular = tw[6 * k + 3 : 6 * k + 6]
             g.moving = any(v != 0.0 for v in values[6 * k : 6 * k + 3])
             g.turning = any(v != 0.0 for v in values[6 * k + 3 : 6 * k + 6])
 
