@@ -204,23 +204,26 @@ class SimWorld:
                 d.qpos[self._gripper_qpos[arm] + 3 : self._gripper_qpos[arm] + 7],
                 d.qvel[self._gripper_dof[arm] : self._gripper_dof[arm] + 3],
                 d.qvel[self._gripper_dof[arm] + 3 : self._gripper_dof[arm] + 6],
-                tuple(zip(self._finger_qpos[arm], self._finger_dof[arm], strict=True)),
-            )
-            for arm in ARMS
-        )
-        # the constraint force on each gripper's free joint: what its wrist transmits
-        # (tautwire.sim.transmitted_wrench.free_joint_wrench, read in place)
-        self._sensed = tuple(
-            (
-                arm,
-                self._grippers[arm],
-                d.qfrc_constraint[self._gripper_dof[arm] : self._gripper_dof[arm] + 6],
+                np.array(self._finger_qpos[arm], dtype=np.int64),
+                np.array(self._finger_dof[arm], dtype=np.int64),
             )
             for arm in ARMS
         )
         self._wrench: dict[Arm, tuple[FloatArray, FloatArray]] = {
             arm: (np.zeros(3), np.zeros(3)) for arm in ARMS
         }
+        # the constraint force on each gripper's free joint: what its wrist transmits
+        # (tautwire.sim.transmitted_wrench.free_joint_wrench, read in place), into
+        # the world's own wrench arrays, rewritten every control period
+        self._sensed = tuple(
+            (
+                self._grippers[arm],
+                d.qfrc_constraint[self._gripper_dof[arm] : self._gripper_dof[arm] + 3],
+                d.qfrc_constraint[self._gripper_dof[arm] + 3 : self._gripper_dof[arm] + 6],
+                *self._wrench[arm],
+            )
+            for arm in ARMS
+        )
         self._max_force = 0.0
         self._warnings = 0
         global _inertia_converged
@@ -412,8 +415,9 @@ class SimWorld:
 
         Args:
             arm: The gripper.
-            copy: False returns the world's own arrays, which a reader must
-                not change (the sensor model, which only adds noise to them).
+            copy: False returns the world's own arrays, rewritten in place
+                every control period, which a reader must neither keep nor
+                change (the sensor model, which only adds noise to them).
 
         Returns:
             Force [N] that the cable and the gripper's contacts exert on the
@@ -454,13 +458,14 @@ class SimWorld:
     def set_twist(self, twist: FloatArray) -> None:
         """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] in [m/s, rad/s], shape (12,)."""
         tw = np.array(twist, dtype=float)  # the world's own copy, never changed in place
-        values = tw.tolist()
+        v = tw.tolist()
         for k, arm in enumerate(ARMS):
             g = self._grippers[arm]
-            g.linear = tw[6 * k : 6 * k + 3]
-            g.angular = tw[6 * k + 3 : 6 * k + 6]
-            g.moving = any(v != 0.0 for v in values[6 * k : 6 * k + 3])
-            g.turning = any(v != 0.0 for v in values[6 * k + 3 : 6 * k + 6])
+            i = 6 * k
+            g.linear = tw[i : i + 3]
+            g.angular = tw[i + 3 : i + 6]
+            g.moving = v[i] != 0.0 or v[i + 1] != 0.0 or v[i + 2] != 0.0
+            g.turning = v[i + 3] != 0.0 or v[i + 4] != 0.0 or v[i + 5] != 0.0
 
     def step(self, n: int | None = None) -> None:
         """Advance the physics by ``n`` steps (default: one control period).
@@ -518,7 +523,7 @@ class SimWorld:
 
     def _write_grippers(self) -> None:
         inverse = self._quat_buffer
-        for g, position, orientation, linear, angular, fingers in self._drive:
+        for g, position, orientation, linear, angular, finger_qpos, finger_dof in self._drive:
             position[:] = g.position
             orientation[:] = g.orientation
             linear[:] = g.linear
@@ -529,10 +534,8 @@ class SimWorld:
                 gap = 0.0
                 if g.held is not None:
                     gap = self._cables[g.held[0]].spec.radius + self._options.hold_clearance
-                qpos, qvel = self._qpos, self._qvel
-                for adr, dof in fingers:
-                    qpos[adr] = gap
-                    qvel[dof] = 0.0
+                self._qpos[finger_qpos] = gap
+                self._qvel[finger_dof] = 0.0
 
     def _physics_step(self, n: int = 1) -> None:
         """Advance ``n`` physics steps with the grippers' twist held constant.
@@ -555,7 +558,7 @@ class SimWorld:
         mujoco.mj_step(self._model, self._data, n)
         dt = self._dt
         duration = n * dt
-        for arm, g, constraint in self._sensed:
+        for g, constraint_force, constraint_torque, force, torque in self._sensed:
             moving, turning = g.moving, g.turning
             # the forces were computed at the pose before the last step
             q_last = g.orientation
@@ -563,10 +566,8 @@ class SimWorld:
                 q_last = integrate_pose(
                     g.position, g.orientation, g.linear, g.angular, duration - dt
                 )[1]
-            force = constraint[0:3].copy()
-            torque = np.empty(3)
-            mujoco.mju_rotVecQuat(torque, constraint[3:6], q_last)  # body frame -> world
-            self._wrench[arm] = (force, torque)
+            force[:] = constraint_force
+            mujoco.mju_rotVecQuat(torque, constraint_torque, q_last)  # body frame -> world
             fn = math.sqrt(float(force @ force))
             if fn > self._max_force:
                 self._max_force = fn
@@ -591,9 +592,11 @@ class SimWorld:
         for inertia, stat in self._warning_stats:
             if not (inertia and converged):
                 bad += stat.number
-        v = d.qvel[self._cable_sel]
+        qvel = self._qvel
+        squares = float(qvel @ qvel)  # bounds every dof's speed, the cable's among them
         limit = self._options.max_speed
-        if bad > self._warnings or not float(v @ v) <= limit * limit:
+        if bad > self._warnings or not squares <= limit * limit:
+            v = qvel[self._cable_sel]
             speed = float(np.max(np.abs(v))) if v.size else 0.0
             if bad > self._warnings or not np.isfinite(speed) or speed > limit:
                 self._warnings = bad
@@ -601,7 +604,7 @@ class SimWorld:
                     f"the simulation diverged at t = {self.time:.4f} s (cable speed"
                     f" {speed:.3g} m/s, MuJoCo instability warnings {bad})"
                 )
-        if not math.isfinite(float(d.qpos @ d.qpos) + float(d.qvel @ d.qvel)) and not (
+        if not math.isfinite(float(self._qpos @ self._qpos) + squares) and not (
             np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))
         ):
             raise SimulationDiverged(f"the simulation produced NaN/inf at t = {self.time:.4f} s")
