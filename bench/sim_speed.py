@@ -104,8 +104,13 @@ def circle_commands(n: int) -> list[Command]:
 
 
 @contextmanager
-def _bare_twin(world: SimWorld, account: dict[str, float]) -> Iterator[None]:
-    """While active, every ``mj_step`` of ``world`` is also run bare on a copy of its state."""
+def bare_twin(world: SimWorld, account: dict[str, float]) -> Iterator[mujoco.MjData]:
+    """While active, every ``mj_step`` of ``world`` is also run bare on a copy of its state.
+
+    Yields the twin ``MjData``; ``account`` collects the seconds of the bare
+    steps (``bare``), of the world's own (``real``), of the copying (``hook``),
+    the steps, and the twin's stage timers (``stage_*``).
+    """
     model = world.model
     twin = mujoco.MjData(model)
     state = np.empty(mujoco.mj_stateSize(model, _STATE))
@@ -147,7 +152,7 @@ def _bare_twin(world: SimWorld, account: dict[str, float]) -> Iterator[None]:
 
     mujoco.mj_step = twin_step
     try:
-        yield
+        yield twin
     finally:
         mujoco.mj_step = step
         for name, timer in _STAGES.items():
@@ -164,7 +169,7 @@ def measure(world: SimWorld, seconds: float) -> dict[str, Any]:
     act, observe = robot.act, robot.observe
     clock = time.perf_counter
     wall = 0.0
-    with _bare_twin(world, account):
+    with bare_twin(world, account):
         for command in commands:
             t0 = clock()
             act(command)
