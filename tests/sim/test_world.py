@@ -189,3 +189,12 @@ def test_repeated_finger_commands_change_nothing_and_new_ones_apply() -> None:
     world.set_gripper("left", GripperCommand("open"))
     assert world.gripper_grip_force("left") == 0.0
     assert all(world._data.ctrl[a] == world.options.open_force for a in world._finger_act["left"])
+
+
+def test_without_cable_damping_no_settling_force_is_left_applied() -> None:
+    # settling damps the cable (settle_damping_time); a run without damping
+    # (cable_damping_time = 0) must not keep the last settling force applied
+    world = peg_scene(cable_damping_time=0.0)
+    assert not world._data.qfrc_applied[world._cable_dofs].any()
+    world.step()
+    assert not world._data.qfrc_applied[world._cable_dofs].any()
