@@ -17,7 +17,14 @@ Figures (medians over thousands of repetitions, microseconds unless named):
   tick with filterpy's KalmanFilter fed the same line; their ratio
   guarded_tick_ratio_vs_filterpy (< 1: ours is faster);
 - elasticity_update_us, hybrid_controller_us, model_update_us: the parts;
-- sim_step_us, sim_realtime_factor: the simulated world, where available.
+- the simulated world, where available (``bench/sim_speed.py``, interleaved
+  control period by control period with a bare ``mujoco.mj_step`` of the same
+  model from the same states): on the demo scene sim_step_us (the world's
+  time per 1 ms physics step), mj_step_us (bare MuJoCo), their ratio
+  sim_overhead_ratio and sim_realtime_factor; under sim_cables the same per
+  cable of 0.2, 0.4, 0.8 and 1.1 m, with MuJoCo's stage timers, contacts and
+  constraint rows, and length_exponent_last_two (cost ~ length^p between
+  0.8 and 1.1 m).
 """
 
 from __future__ import annotations
@@ -28,6 +35,7 @@ import platform
 import sys
 import time
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -273,11 +281,13 @@ def primitive_tick_us(n: int) -> float:
 
 
 def sim_benchmarks(seconds: float) -> dict[str, Any]:
+    """The simulated world against bare MuJoCo (``bench/sim_speed.py``), where available."""
     try:
-        from tautwire.experiments.bench_scene import measure_sim_speed
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        from sim_speed import sim_benchmarks as measure
     except ImportError as exc:  # the simulated world is not available
         return {"sim_error": f"not available: {exc}"}
-    return measure_sim_speed(seconds)
+    return measure(seconds)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -170,3 +170,31 @@ def test_model_and_data_are_the_worlds_own() -> None:
     world.step()  # the world steps the data it hands out
     assert float(world.data.time) == pytest.approx(t + world.control_period)
     assert world.model.opt.timestep == world.timestep
+
+
+def test_repeated_finger_commands_change_nothing_and_new_ones_apply() -> None:
+    world = peg_scene()
+    right = world._finger_act["right"]
+    assert world.gripper_mode("right") == "open"  # a gripper that holds nothing starts open
+    assert all(world._data.ctrl[a] == world.options.open_force for a in right)
+    for _ in range(2):  # the second, identical command returns at once
+        world.set_gripper("left", GripperCommand("hold"))
+        assert world.held("left") is not None and world.gripper_mode("left") == "hold"
+    for force in (2.0, 2.0, 3.0):
+        world.set_gripper("left", GripperCommand("grip_force", force))
+        assert world.held("left") is None and world.gripper_grip_force("left") == force
+        left = world._finger_act["left"]
+        assert all(world._data.ctrl[a] == -force for a in left)
+    world.set_gripper("left", GripperCommand("open"))
+    world.set_gripper("left", GripperCommand("open"))
+    assert world.gripper_grip_force("left") == 0.0
+    assert all(world._data.ctrl[a] == world.options.open_force for a in world._finger_act["left"])
+
+
+def test_without_cable_damping_no_settling_force_is_left_applied() -> None:
+    # settling damps the cable (settle_damping_time); a run without damping
+    # (cable_damping_time = 0) must not keep the last settling force applied
+    world = peg_scene(cable_damping_time=0.0)
+    assert not world._data.qfrc_applied[world._cable_dofs].any()
+    world.step()
+    assert not world._data.qfrc_applied[world._cable_dofs].any()

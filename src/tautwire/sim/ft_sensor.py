@@ -49,6 +49,7 @@ class FTSensor:
         self._noise_force = float(noise_force)
         self._noise_torque = float(noise_torque)
         self._rng = rng
+        self._scale = np.array([self._noise_force] * 3 + [self._noise_torque] * 3)
 
     @property
     def arm(self) -> Arm:
@@ -62,6 +63,6 @@ class FTSensor:
             force: True force [N] on the gripper, world frame.  # (3,)
             torque: True torque [N m] about the tool centre point, world frame.  # (3,)
         """
-        noisy_force = force + self._noise_force * self._rng.standard_normal(3)
-        noisy_torque = torque + self._noise_torque * self._rng.standard_normal(3)
-        return Wrench(self._arm, noisy_force, noisy_torque)
+        # one draw of six: the same numbers as three for the force, then three for the torque
+        noise = self._scale * self._rng.standard_normal(6)
+        return Wrench(self._arm, force + noise[0:3], torque + noise[3:6])

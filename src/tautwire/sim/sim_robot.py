@@ -71,5 +71,7 @@ class SimRobot:
                     grip_force=world.gripper_grip_force(arm),
                 )
             )
-        wrenches = tuple(sensor.measure(*world.wrench(sensor.arm)) for sensor in self._sensors)
+        wrenches = tuple(
+            sensor.measure(*world.wrench(sensor.arm, copy=False)) for sensor in self._sensors
+        )
         return Observation(world.time, states[0], states[1], wrenches)

@@ -1,6 +1,6 @@
 """Two ways to compute the wrench that a gripper transmits.
 
-:func:`free_joint_wrench` (used by the world) reads the constraint force on
+:func:`free_joint_wrench` reads the constraint force on
 the gripper's free joint, which sums every constraint acting on the gripper
 and its fingers: the ``connect`` equality of a held cable and all contacts on
 the finger pads. :func:`explicit_wrench` adds up the same forces one by one

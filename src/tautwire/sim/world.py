@@ -12,6 +12,7 @@ transmits, and guards against divergence. Robots
 from __future__ import annotations
 
 import logging
+import math
 import re
 from dataclasses import dataclass
 
@@ -28,7 +29,6 @@ from tautwire.sim.gripper_state import GripperState, integrate_pose
 from tautwire.sim.mjcf import SceneModel, hold_equality, scene_model, vertex_body
 from tautwire.sim.options import SimOptions, control_substeps
 from tautwire.sim.spec import CableSpec, WorldSpec
-from tautwire.sim.transmitted_wrench import free_joint_wrench
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -151,6 +151,11 @@ class SimWorld:
             np.concatenate(dofs).astype(np.int64) if dofs else np.zeros(0, np.int64)
         )
         self._cable_dof_mass = m.dof_M0[self._cable_dofs].copy() if len(dofs) else np.zeros(0)
+        # the cable dofs as a slice where they are one run (the usual case): a view, no gather
+        self._cable_sel: slice | IntArray = self._cable_dofs
+        if self._cable_dofs.size and np.all(np.diff(self._cable_dofs) == 1):
+            first = int(self._cable_dofs[0])
+            self._cable_sel = slice(first, first + int(self._cable_dofs.size))
         self._gripper_qpos: dict[Arm, int] = {}
         self._gripper_dof: dict[Arm, int] = {}
         self._finger_qpos: dict[Arm, tuple[int, int]] = {}
@@ -185,18 +190,55 @@ class SimWorld:
             self._grippers[arm] = GripperState(
                 g.position.copy(), g.orientation.copy(), np.zeros(3), np.zeros(3)
             )
+        # views on MuJoCo's arrays for the per-period path (MjData never reallocates them)
+        d = self._data
+        self._qpos: FloatArray = d.qpos
+        self._qvel: FloatArray = d.qvel
+        self._qfrc_applied: FloatArray = d.qfrc_applied
+        self._dt = float(m.opt.timestep)
+        self._quat_buffer = np.empty(4)
+        self._drive = tuple(
+            (
+                self._grippers[arm],
+                d.qpos[self._gripper_qpos[arm] : self._gripper_qpos[arm] + 3],
+                d.qpos[self._gripper_qpos[arm] + 3 : self._gripper_qpos[arm] + 7],
+                d.qvel[self._gripper_dof[arm] : self._gripper_dof[arm] + 3],
+                d.qvel[self._gripper_dof[arm] + 3 : self._gripper_dof[arm] + 6],
+                np.array(self._finger_qpos[arm], dtype=np.int64),
+                np.array(self._finger_dof[arm], dtype=np.int64),
+            )
+            for arm in ARMS
+        )
         self._wrench: dict[Arm, tuple[FloatArray, FloatArray]] = {
             arm: (np.zeros(3), np.zeros(3)) for arm in ARMS
         }
+        # the constraint force on each gripper's free joint: what its wrist transmits
+        # (tautwire.sim.transmitted_wrench.free_joint_wrench, read in place), into
+        # the world's own wrench arrays, rewritten every control period
+        self._sensed = tuple(
+            (
+                self._grippers[arm],
+                d.qfrc_constraint[self._gripper_dof[arm] : self._gripper_dof[arm] + 3],
+                d.qfrc_constraint[self._gripper_dof[arm] + 3 : self._gripper_dof[arm] + 6],
+                *self._wrench[arm],
+            )
+            for arm in ARMS
+        )
         self._max_force = 0.0
         self._warnings = 0
         global _inertia_converged
         _inertia_converged = None  # this world's first inertia report decides
         self._t0 = 0.0
         self._damping_time = opt.cable_damping_time
+        self._damping = self._damping_force_per_velocity()
+        # MuJoCo's warning counters, live views read after every control period
+        self._warning_stats = tuple(
+            (w == mujoco.mjtWarning.mjWARN_INERTIA, self._data.warning[int(w)])
+            for w in _BAD_WARNINGS
+        )
         # open every gripper, then grasp where the spec says
         for arm in ARMS:
-            self.set_gripper(arm, GripperCommand("open"))
+            self._set_fingers(arm, "open", 0.0)  # nothing is held yet
         for cable in spec.cables:
             disc = self._scene.discretizations[cable.name]
             for h in cable.holds:
@@ -259,6 +301,7 @@ class SimWorld:
         if opt.settle_time <= 0.0:
             return
         self._damping_time = opt.settle_damping_time
+        self._damping = self._damping_force_per_velocity()
         steps = int(np.ceil(opt.settle_time / opt.timestep))
         min_steps = int(np.ceil(0.1 / opt.timestep))
         try:
@@ -270,6 +313,16 @@ class SimWorld:
                         break
         finally:
             self._damping_time = opt.cable_damping_time
+            self._damping = self._damping_force_per_velocity()
+            if not self._damping.size:  # no damping left over from settling
+                self._data.qfrc_applied[self._cable_sel] = 0.0
+
+    def _damping_force_per_velocity(self) -> FloatArray:
+        """-m_i / tau per cable dof [N s/m]: the light mass-proportional damping."""
+        if self._damping_time <= 0.0:
+            return np.zeros(0)
+        damping: FloatArray = -self._cable_dof_mass / self._damping_time
+        return damping
 
     # --------------------------------------------------------------- queries
     @property
@@ -343,7 +396,7 @@ class SimWorld:
     def gripper_opening(self, arm: Arm) -> float:
         """Distance [m] between the finger pads of ``arm``'s gripper."""
         a, b = self._finger_qpos[arm]
-        return float(self._data.qpos[a] + self._data.qpos[b])
+        return float(self._qpos[a] + self._qpos[b])
 
     def gripper_grip_force(self, arm: Arm) -> float:
         """Force [N] with which ``arm``'s fingers squeeze (0 when open)."""
@@ -357,8 +410,14 @@ class SimWorld:
         """(cable, vertex) that ``arm`` holds rigidly, or None."""
         return self._grippers[arm].held
 
-    def wrench(self, arm: Arm) -> tuple[FloatArray, FloatArray]:
+    def wrench(self, arm: Arm, copy: bool = True) -> tuple[FloatArray, FloatArray]:
         """Noise-free wrench on ``arm``'s gripper from the last physics step.
+
+        Args:
+            arm: The gripper.
+            copy: False returns the world's own arrays, rewritten in place
+                every control period, which a reader must neither keep nor
+                change (the sensor model, which only adds noise to them).
 
         Returns:
             Force [N] that the cable and the gripper's contacts exert on the
@@ -366,12 +425,23 @@ class SimWorld:
             point, world frame.
         """
         f, t = self._wrench[arm]
-        return f.copy(), t.copy()
+        return (f.copy(), t.copy()) if copy else (f, t)
 
     # ------------------------------------------------------------- commands
     def set_gripper(self, arm: Arm, command: GripperCommand) -> None:
-        """Apply a finger command: hold (grasp), open (release) or grip_force (slide)."""
+        """Apply a finger command: hold (grasp), open (release) or grip_force (slide).
+
+        A command that repeats the fingers' current state changes nothing (the
+        usual case, once per control period) and returns at once.
+        """
         g = self._grippers[arm]
+        mode = command.mode
+        if mode == "hold":
+            force = self._options.hold_grip_force
+        else:
+            force = command.grip_force if mode == "grip_force" else 0.0
+        if mode == g.mode and g.grip_force == force and (mode == "hold" or g.held is None):
+            return
         if command.mode == "open":
             self._release(arm)
             self._set_fingers(arm, "open", 0.0)
@@ -387,10 +457,15 @@ class SimWorld:
 
     def set_twist(self, twist: FloatArray) -> None:
         """Set the grippers' world-frame twist [v_l, w_l, v_r, w_r] in [m/s, rad/s], shape (12,)."""
-        tw = np.asarray(twist, dtype=float)
+        tw = np.array(twist, dtype=float)  # the world's own copy, never changed in place
+        v = tw.tolist()
         for k, arm in enumerate(ARMS):
-            self._grippers[arm].linear = tw[6 * k : 6 * k + 3].copy()
-            self._grippers[arm].angular = tw[6 * k + 3 : 6 * k + 6].copy()
+            g = self._grippers[arm]
+            i = 6 * k
+            g.linear = tw[i : i + 3]
+            g.angular = tw[i + 3 : i + 6]
+            g.moving = v[i] != 0.0 or v[i + 1] != 0.0 or v[i + 2] != 0.0
+            g.turning = v[i + 3] != 0.0 or v[i + 4] != 0.0 or v[i + 5] != 0.0
 
     def step(self, n: int | None = None) -> None:
         """Advance the physics by ``n`` steps (default: one control period).
@@ -447,24 +522,20 @@ class SimWorld:
         return best
 
     def _write_grippers(self) -> None:
-        d = self._data
-        inverse = np.empty(4)
-        for arm in ARMS:
-            g = self._grippers[arm]
-            qa, da = self._gripper_qpos[arm], self._gripper_dof[arm]
-            d.qpos[qa : qa + 3] = g.position
-            d.qpos[qa + 3 : qa + 7] = g.orientation
-            d.qvel[da : da + 3] = g.linear
+        inverse = self._quat_buffer
+        for g, position, orientation, linear, angular, finger_qpos, finger_dof in self._drive:
+            position[:] = g.position
+            orientation[:] = g.orientation
+            linear[:] = g.linear
             # free-joint angular velocity is in the body frame
             mujoco.mju_negQuat(inverse, g.orientation)
-            mujoco.mju_rotVecQuat(d.qvel[da + 3 : da + 6], g.angular, inverse)
+            mujoco.mju_rotVecQuat(angular, g.angular, inverse)
             if g.mode == "hold":  # fingers closed around the held cable, not squeezing
                 gap = 0.0
                 if g.held is not None:
                     gap = self._cables[g.held[0]].spec.radius + self._options.hold_clearance
-                for adr, dof in zip(self._finger_qpos[arm], self._finger_dof[arm], strict=True):
-                    d.qpos[adr] = gap
-                    d.qvel[dof] = 0.0
+                self._qpos[finger_qpos] = gap
+                self._qvel[finger_dof] = 0.0
 
     def _physics_step(self, n: int = 1) -> None:
         """Advance ``n`` physics steps with the grippers' twist held constant.
@@ -473,48 +544,67 @@ class SimWorld:
         armature and gravity compensation the free joints then move at that
         constant twist on their own (the constraint forces change a gripper's
         velocity by about 1e-7 m/s per N and step), and the pose is rewritten
-        exactly at the next call.
+        exactly at the next call. This runs once per control period: it reads
+        and writes MuJoCo's arrays through views made once, when the world
+        was built.
         """
-        m, d = self._model, self._data
         self._write_grippers()
-        if self._damping_time > 0.0 and self._cable_dofs.size:
-            d.qfrc_applied[self._cable_dofs] = (
-                -self._cable_dof_mass / self._damping_time * d.qvel[self._cable_dofs]
-            )
-        mujoco.mj_step(m, d, n)
-        duration = n * m.opt.timestep
-        for arm in ARMS:
-            g = self._grippers[arm]
+        if self._damping.size:
+            sel = self._cable_sel
+            if isinstance(sel, slice):
+                np.multiply(self._damping, self._qvel[sel], out=self._qfrc_applied[sel])
+            else:
+                self._qfrc_applied[sel] = self._damping * self._qvel[sel]
+        mujoco.mj_step(self._model, self._data, n)
+        dt = self._dt
+        duration = n * dt
+        for g, constraint_force, constraint_torque, force, torque in self._sensed:
+            moving, turning = g.moving, g.turning
             # the forces were computed at the pose before the last step
             q_last = g.orientation
-            if n > 1 and g.angular.any():
+            if n > 1 and turning:
                 q_last = integrate_pose(
-                    g.position, g.orientation, g.linear, g.angular, duration - m.opt.timestep
+                    g.position, g.orientation, g.linear, g.angular, duration - dt
                 )[1]
-            force, torque = free_joint_wrench(d, self._gripper_dof[arm], q_last)
-            self._wrench[arm] = (force, torque)
-            fn = float(np.sqrt(force @ force))
+            force[:] = constraint_force
+            mujoco.mju_rotVecQuat(torque, constraint_torque, q_last)  # body frame -> world
+            fn = math.sqrt(float(force @ force))
             if fn > self._max_force:
                 self._max_force = fn
-            if g.linear.any() or g.angular.any():
+            if moving or turning:
                 g.position, g.orientation = integrate_pose(
                     g.position, g.orientation, g.linear, g.angular, duration
                 )
         self._check()
 
     def _check(self) -> None:
+        """Raise :class:`SimulationDiverged` on an instability warning, NaN/inf or a blow-up.
+
+        Runs after every control period: the common case (all finite, every
+        cable dof slower than ``max_speed``) is decided from two dot products
+        (a NaN or inf in the state makes them non-finite; a sum of squares
+        below max_speed^2 bounds every component); only otherwise is the
+        state searched element by element.
+        """
         d = self._data
-        bad = sum(
-            d.warning[int(w)].number
-            for w in _BAD_WARNINGS
-            if not (w == mujoco.mjtWarning.mjWARN_INERTIA and _inertia_converged)
-        )
-        speed = float(np.max(np.abs(d.qvel[self._cable_dofs]))) if self._cable_dofs.size else 0.0
-        if bad > self._warnings or not np.isfinite(speed) or speed > self._options.max_speed:
-            self._warnings = bad
-            raise SimulationDiverged(
-                f"the simulation diverged at t = {self.time:.4f} s (cable speed {speed:.3g} m/s,"
-                f" MuJoCo instability warnings {bad})"
-            )
-        if not (np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))):
+        converged = _inertia_converged
+        bad = 0
+        for inertia, stat in self._warning_stats:
+            if not (inertia and converged):
+                bad += stat.number
+        qvel = self._qvel
+        squares = float(qvel @ qvel)  # bounds every dof's speed, the cable's among them
+        limit = self._options.max_speed
+        if bad > self._warnings or not squares <= limit * limit:
+            v = qvel[self._cable_sel]
+            speed = float(np.max(np.abs(v))) if v.size else 0.0
+            if bad > self._warnings or not np.isfinite(speed) or speed > limit:
+                self._warnings = bad
+                raise SimulationDiverged(
+                    f"the simulation diverged at t = {self.time:.4f} s (cable speed"
+                    f" {speed:.3g} m/s, MuJoCo instability warnings {bad})"
+                )
+        if not math.isfinite(float(self._qpos @ self._qpos) + squares) and not (
+            np.all(np.isfinite(d.qpos)) and np.all(np.isfinite(d.qvel))
+        ):
             raise SimulationDiverged(f"the simulation produced NaN/inf at t = {self.time:.4f} s")
