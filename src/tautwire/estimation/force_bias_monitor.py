@@ -43,8 +43,12 @@ FloatArray = NDArray[np.float64]
 
 #: Default length [s] of one window's fit.
 DEFAULT_WINDOW = 2.0
-#: Default bias [N] (normal to the cable) that counts as a fault.
-DEFAULT_THRESHOLD = 0.15
+#: Default bias [N] (normal to the cable) that counts as a fault. At 0.15 N,
+#: 3 of 100 Table I I trials (no fault) ended with sensor_bias at 0.15-0.21 N:
+#: the moving cable's drag and wobble at the swing's frequency read as a
+#: bias; at 0.25 N none of those, and the same 21 robustness bias drifts
+#: (seed 0) end as they did (detected later in the ramp).
+DEFAULT_THRESHOLD = 0.25
 #: Default number of stds by which the bias must exceed zero.
 DEFAULT_SIGMAS = 5.0
 #: Default number of the last windows combined.
