@@ -189,8 +189,18 @@ def contact_tolerance(truth: GroundTruth, fixture: str) -> float:
 
 
 def true_contacts(truth: GroundTruth, cable: str) -> dict[str, FloatArray]:
-    """The true contact point [m] of every fixture ``cable`` touches, by fixture name."""
-    return {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
+    """The true contact point [m] of every fixture ``cable`` touches, by fixture name.
+
+    A clip that holds the cable in its jaws (:meth:`GroundTruth.clipped`)
+    counts even where the cable lies in its seat unloaded, touching none of
+    its geoms (F and C lift back to leave it so); its point is then the
+    cable's point nearest the seat.
+    """
+    out = {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
+    for name in truth.fixture_names():
+        if name not in out and truth.fixture_type(name) == "clip" and truth.clipped(name, cable):
+            out[name] = truth.seat(name, cable)
+    return out
 
 
 def check_contacts(
