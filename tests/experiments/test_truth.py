@@ -360,3 +360,30 @@ def test_a_missed_clip_reads_as_a_false_success(seat: list[float], via: bool) ->
         assert ("not in the jaws of C" in claim.detail) is not via
         # the same step reported failed claims nothing
         assert check_step(letter, {"clip": "C"}, False, watch, ctx, truth).agrees
+
+
+def test_a_trusted_clip_point_is_right_anywhere_along_its_slot() -> None:
+    """The cable runs straight through a clip: its seat and its exit both stand for it."""
+    seat = np.array([0.15, 0.0, 0.3])
+    world = anchor_and_gripper(
+        [0.0, 0.0, 0.3],
+        [0.3, 0.0, 0.3],
+        0.31,
+        fixtures=(ClipSpec("C", list(seat), 0.0, 2.0),),
+        via=("C",),
+    )
+    rest(world, 0.3)
+    truth = GroundTruth(world)
+    gripper = world.gripper_pose("left")[0]
+
+    def judged(point: np.ndarray) -> bool:
+        graph = _graph(
+            [("fixed", "A", np.array([0.0, 0.0, 0.3]), None), ("fixed", "C", point, 0.001)],
+            gripper,
+        )
+        return judge_model(check_contacts(graph, truth, "W", 0.01)).agrees
+
+    assert judged(seat)  # where F and C put it
+    assert judged(seat + np.array([0.014, 0.0, 0.0]))  # near the slot's exit
+    assert not judged(seat + np.array([0.0, 0.01, 0.0]))  # 10 mm beside the slot
+    assert not judged(seat + np.array([0.05, 0.0, 0.0]))  # 35 mm past the exit

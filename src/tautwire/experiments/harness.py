@@ -280,7 +280,7 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
     r = run.result
     failed = next((s for s in r["steps"] if s["outcome"] != "success"), None)
     false = [
-        k
+        f"{k} {s['primitive']} ({s.get('cable')}): {(s.get('truth') or {}).get('detail', '')}"
         for k, s in enumerate(r["steps"], start=1)
         if s["outcome"] == "success" and not (s.get("truth") or {}).get("agrees", True)
     ]
