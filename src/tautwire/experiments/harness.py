@@ -300,7 +300,8 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
         "failed_step": None
         if failed is None
         else f"{r['steps'].index(failed) + 1} {failed['primitive']} ({failed.get('cable')})",
-        "cause": None if failed is None else failed.get("cause"),
+        "cause": (failed.get("cause") if failed is not None else None)
+        or (None if r["success"] else "false_success"),
         "detail": None if failed is None else failed.get("detail"),
         "routes_done": sum(1 for c in r.get("cables", []) if c.get("route_done")),
         "model_horizontal_mean": me.get("horizontal_mean"),
