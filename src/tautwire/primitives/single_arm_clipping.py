@@ -37,8 +37,55 @@ JAW_TOP = 0.008
 #: Lowest height [m] above the table the gripper's tool centre point may go
 #: (its finger pads reach 8 mm below it).
 TABLE_CLEARANCE = 0.02
+#: The push starts when the gripper is this close [m] to the line over the clip,
+#: across the cable (the cable's line then misses the slot by less; along the
+#: cable the tension decides where the gripper stands) ...
+ALIGN_TOLERANCE = 0.001
+#: ... or, after this long [s] aligning, within 3 mm.
+ALIGN_PATIENCE = 3.0
+#: Where F aims, across the slot [m], after a push went down beside the jaws
+#: without a snap (the jaws catch a cable within about 2.6 mm of the slot's
+#: centre; a harness peg's tangent point and the cable's place in the fingers
+#: put it 3-5 mm off).
+BESIDE = (0.003, -0.003)
+#: Height [m] over the straight line from the contact through the seat to which the
+#: gripper lifts, after the line's height read seated there, to prove the cable
+#: is in: a clipped cable stays held down at the seat, a cable that slid down
+#: beside the clip's wall rises with the line (on the harness board one lay 8 mm
+#: beside the slot and read seated, 2.6 mm from it, at the straight line).
+VERIFY_RISE = 0.01
+#: The cable is in when its line at the clip rises by less than this fraction
+#: of a free cable's rise as the gripper lifts ``VERIFY_RISE`` (a difference:
+#: the line's height is a few mm biased, by the tail's weight among others).
+PROOF_FRACTION = 0.5
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
+
+
+def bend_side(
+    ctx: PrimitiveContext, contact: int | None, c: np.ndarray, p_gripper: np.ndarray
+) -> float:
+    """The side of a peg at model point ``contact`` that the cable bends round, seen from above.
+
+    From the model's point before it (away from the gripper) through the
+    peg to the gripper: +1 when the cable turns left (counter-clockwise) round
+    the peg, which then lies on its left (as
+    :func:`~tautwire.primitives.peg_leave.wrap_side`), -1 right, 0 when
+    there is no point before it or the cable runs straight.
+    """
+    points = ctx.graph.points
+    g = ctx.estimator.gripper_index
+    if contact is None or g is None:
+        return 0.0
+    before = contact - 1 if g > contact else contact + 1
+    if not 0 <= before < len(points):
+        return 0.0
+    a = c - points[before].position
+    b = p_gripper - c
+    cross = float(a[0] * b[1] - a[1] * b[0])
+    if abs(cross) < 1e-9 * max(float(np.linalg.norm(a[:2]) * np.linalg.norm(b[:2])), 1e-12):
+        return 0.0
+    return math.copysign(1.0, cross)
 
 
 class SingleArmClipping(Primitive):
@@ -59,11 +106,19 @@ class SingleArmClipping(Primitive):
     to the seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back
     to the straight line from c through the seat (a clipped cable lies there
     unloaded; an unclipped one rests on the jaws); if the force's line still
-    reaches the seat, the cable is in and the model gets a fixed point at q.
+    reaches the seat, it lifts ``VERIFY_RISE`` higher: a clipped cable is held
+    down there (lightly: a weak clip is not pulled open), one that slid down
+    beside the clip rises with the line; if the line stays down, the cable is
+    in: the gripper goes back down to the straight line and the model gets a
+    fixed point at q.
     If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
+    A push that goes down to ``MAX_ANGLE`` or the table without a snap (the
+    cable slid down beside the jaws) backs up and aligns again, aiming
+    ``BESIDE`` across the slot, once each way.
+
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
-    table (``TABLE_CLEARANCE``; the message gives the planned press against
+    table on every aim (``TABLE_CLEARANCE``; the message gives the planned press against
     the clip's push force), or the cable did not stay in after the last
     attempt; ``precondition`` if the clip is not between the contact and
     the gripper or its slot is across the cable; ``slipped`` if the cable
@@ -78,7 +133,7 @@ class SingleArmClipping(Primitive):
     name = "single_arm_clipping"
     letter = "F"
 
-    def __init__(self, arm: Arm, clip: str, timeout: float = 20.0) -> None:
+    def __init__(self, arm: Arm, clip: str, timeout: float = 45.0) -> None:
         super().__init__(timeout)
         if arm not in ("left", "right"):
             raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
@@ -137,6 +192,11 @@ class SingleArmClipping(Primitive):
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
         self._base_force = ctx.tension if ctx.tension is not None else 2.0
         self._since = obs.time
+        self._lateral = 0.0  # aim this far [m] beside the seat, across the slot
+        self._h0 = 0.0  # the line's height at the clip on the straight line [m]
+        self._angle_proof = 0.0
+        self._free_rise = VERIFY_RISE
+        self._misses = 0
 
     def _leave(
         self, ctx: PrimitiveContext, state: TensionState, p_gripper: np.ndarray, info: ClipInfo
@@ -146,9 +206,12 @@ class SingleArmClipping(Primitive):
         A point contact (an anchor, a clip, an estimated point): the
         contact itself. A peg: the cable leaves it tangentially, its radius
         (the filter's estimate, else the design's peg + cable radius) beside
-        the axis point the model holds, on the side it wraps it now
-        (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
-        line): the tangent point of the line over the clip
+        the axis point the model holds, on the side the cable bends round it
+        (:func:`bend_side`: from the model point before it to the gripper;
+        the force's line, :func:`~tautwire.primitives.peg_leave.wrap_side`,
+        passes the estimated axis too closely to tell, the axis being fitted
+        to those lines, and on the harness board it told the wrong side, 17 mm
+        off), the tangent point of the line over the clip
         (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
         axis would put the cable a radius beside the slot.
         """
@@ -164,7 +227,9 @@ class SingleArmClipping(Primitive):
             if estimate is not None and estimate.radius is not None
             else est.round_fixtures[label][1]
         )
-        side = wrap_side(c, p_gripper, state.direction)
+        side = bend_side(ctx, i, c, p_gripper)
+        if side == 0.0:
+            side = wrap_side(c, p_gripper, state.direction)
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
 
@@ -195,6 +260,8 @@ class SingleArmClipping(Primitive):
         """The gripper's set point while aligning: on the line from c over the clip."""
         c = self._contact
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
+        across = np.array([-float(self.info.slot[1]), float(self.info.slot[0]), 0.0])
+        through = through + self._lateral * across  # after a miss, a little to the side
         w = (through - c) / float(np.linalg.norm(through - c))
         radius = float(np.linalg.norm(obs.gripper(self.arm).position - c))
         target: np.ndarray = c + radius * w
@@ -230,7 +297,10 @@ class SingleArmClipping(Primitive):
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
-            if float(np.linalg.norm(me.position - target)) < 0.003:
+            error = me.position - target
+            across = error - state.direction * float(state.direction @ error)
+            close = ALIGN_TOLERANCE if obs.time - self._since < ALIGN_PATIENCE else 0.003
+            if float(np.linalg.norm(across)) < close and float(np.linalg.norm(error)) < 0.003:
                 self.phase, self._since = "push", obs.time
                 out = me.position - self.info.position
                 out[2] = 0.0
@@ -248,6 +318,13 @@ class SingleArmClipping(Primitive):
                 rise = float(self._contact[2] - self.info.position[2])
                 run = float(np.hypot(*(self.info.position - self._contact)[:2]))
                 self._angle_rest = max(math.atan2(rise, run), self._angle0)
+                # the proof then lifts the gripper VERIFY_RISE over that line: a
+                # free cable's line rises at the clip by the lever d / (d + r)
+                reach = math.hypot(float(offset @ self._out), float(offset[2]))
+                self._angle_proof = self._angle_rest - math.atan2(VERIFY_RISE, max(reach, 1e-3))
+                d = float(np.hypot(*(self._exit - self._contact)[:2]))
+                r = max(float(offset @ self._out), 1e-3)
+                self._free_rise = VERIFY_RISE * d / (d + r)
                 self.force = self._plan_force(me.position, state.tension, ctx)
         elif self.phase in ("push", "press"):
             force = self.force
@@ -260,6 +337,11 @@ class SingleArmClipping(Primitive):
                 # felt the snap: press on a little (the line's height is
                 # a few mm uncertain), then lift and verify
                 self.phase, self._pressed_to = "press", self.angle + PRESS_EXTRA
+            elif (self.angle > MAX_ANGLE or target[2] < self.floor) and self._misses < len(BESIDE):
+                # the cable went down beside the jaws: back up, aim a little to the side
+                self._lateral = BESIDE[self._misses]
+                self._misses += 1
+                self.phase = "retreat"
             elif self.angle > MAX_ANGLE or target[2] < self.floor:
                 where = "the table" if target[2] < self.floor else "the steepest bend"
                 self.outcome = Outcome.failure(
@@ -267,15 +349,52 @@ class SingleArmClipping(Primitive):
                     f"no snap felt into {self.clip} down to {where}"
                     f" (cable {1e3 * (height or 0.0):.1f} mm above its seat; the bend"
                     f" presses about {self.press:.1f} N of the {self.info.push_force:.1f} N it"
-                    " needs): hold the cable closer to the clip",
+                    " needs; aimed at the slot and "
+                    f"{', '.join(f'{1e3 * b:+.0f}' for b in BESIDE)} mm beside it):"
+                    " hold the cable closer to the clip",
                 )
+        elif self.phase == "prove":  # lift higher: a clipped cable stays down at the seat
+            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle_proof)
+            target = self._pivot(obs)
+            settled = obs.time - self._since > 0.3
+            if settled and self.angle <= self._angle_proof and norm3(me.position - target) < 0.003:
+                rose = (self.sensing.height or 0.0) - self._h0
+                if rose > PROOF_FRACTION * self._free_rise and self._misses < len(BESIDE):
+                    # it lay beside the jaws: back up, aim a little to the side
+                    self._lateral = BESIDE[self._misses]
+                    self._misses += 1
+                    self.phase = "retreat"
+                elif rose > PROOF_FRACTION * self._free_rise:
+                    self.outcome = Outcome.failure(
+                        "not_clipped",
+                        f"the cable is not in {self.clip}: lifting the gripper "
+                        f"{1e3 * VERIFY_RISE:.0f} mm, its line at the clip rose "
+                        f"{1e3 * rose:.1f} mm (a free cable's would rise "
+                        f"{1e3 * self._free_rise:.1f} mm): it lies beside or on the jaws",
+                    )
+                else:  # in: back down onto the straight line, where it lies unloaded
+                    self.phase, self._since = "return", obs.time
+        elif self.phase == "return":
+            self.angle = min(self.angle + PUSH_RATE * ctx.control_period, self._angle_rest)
+            target = self._pivot(obs)
+            settled = obs.time - self._since > 0.3
+            if settled and self.angle >= self._angle_rest and norm3(me.position - target) < 0.003:
+                self._verify(ctx)
+        elif self.phase == "retreat":  # back up over the clip, then align again
+            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle0)
+            target = self._pivot(obs)
+            if self.angle <= self._angle0 and norm3(me.position - target) < 0.003:
+                self.phase, self._since = "align", obs.time
         else:  # lift back over the clip and feel whether the cable stayed in
             rest = self._angle_rest
             self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, rest)
             target = self._pivot(obs)
             settled = obs.time - self._since > 0.3
             if settled and self.angle <= rest and norm3(me.position - target) < 0.003:
-                if self.sensing.seated or self.attempts >= ATTEMPTS:
+                if self.sensing.seated:
+                    self._h0 = self.sensing.height or 0.0
+                    self.phase, self._since = "prove", obs.time
+                elif self.attempts >= ATTEMPTS:
                     self._verify(ctx)
                 else:  # not in: push again, deeper than the last time
                     self.attempts += 1
