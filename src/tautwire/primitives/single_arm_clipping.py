@@ -109,8 +109,7 @@ class SingleArmClipping(Primitive):
     reaches the seat, it lifts ``VERIFY_RISE`` higher: a clipped cable is held
     down there (lightly: a weak clip is not pulled open), one that slid down
     beside the clip rises with the line; if the line stays down, the cable is
-    in: the gripper goes back down to the straight line and the model gets a
-    fixed point at q.
+    in and the model gets a fixed point at q.
     If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
     A push that goes down to ``MAX_ANGLE`` or the table without a snap (the
@@ -372,14 +371,8 @@ class SingleArmClipping(Primitive):
                         f"{1e3 * rose:.1f} mm (a free cable's would rise "
                         f"{1e3 * self._free_rise:.1f} mm): it lies beside or on the jaws",
                     )
-                else:  # in: back down onto the straight line, where it lies unloaded
-                    self.phase, self._since = "return", obs.time
-        elif self.phase == "return":
-            self.angle = min(self.angle + PUSH_RATE * ctx.control_period, self._angle_rest)
-            target = self._pivot(obs)
-            settled = obs.time - self._since > 0.3
-            if settled and self.angle >= self._angle_rest and norm3(me.position - target) < 0.003:
-                self._verify(ctx)
+                else:
+                    self._verify(ctx)
         elif self.phase == "retreat":  # back up over the clip, then align again
             self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle0)
             target = self._pivot(obs)
