@@ -43,21 +43,12 @@ TABLE_CLEARANCE = 0.02
 ALIGN_TOLERANCE = 0.001
 #: ... or, after this long [s] aligning, within 3 mm.
 ALIGN_PATIENCE = 3.0
-#: Where F aims, across the slot [m], after a push went down beside the jaws
-#: without a snap (the jaws catch a cable within about 2.6 mm of the slot's
-#: centre; a harness peg's tangent point and the cable's place in the fingers
-#: put it 3-5 mm off).
-BESIDE = (0.003, -0.003)
 #: Height [m] over the straight line from the contact through the seat to which the
-#: gripper lifts, after the line's height read seated there, to prove the cable
-#: is in: a clipped cable stays held down at the seat, a cable that slid down
-#: beside the clip's wall rises with the line (on the harness board one lay 8 mm
-#: beside the slot and read seated, 2.6 mm from it, at the straight line).
-VERIFY_RISE = 0.01
-#: The cable is in when its line at the clip rises by less than this fraction
-#: of a free cable's rise as the gripper lifts ``VERIFY_RISE`` (a difference:
-#: the line's height is a few mm biased, by the tail's weight among others).
-PROOF_FRACTION = 0.5
+#: gripper lifts to prove the cable is in: a clipped cable stays held down at the
+#: seat (the force's line still reaches it), a cable that slid down beside the
+#: clip's wall rises with the line (on the harness board one lay 8 mm beside the
+#: slot, its line 2.6 mm from it, at the straight line itself).
+VERIFY_RISE = 0.005
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
 
@@ -104,20 +95,15 @@ class SingleArmClipping(Primitive):
     (:class:`PivotPress`, from the contact, the clip's design and k). The
     snap is felt (:class:`ClipHeight`): the force's line drops from the jaws
     to the seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back
-    to the straight line from c through the seat (a clipped cable lies there
-    unloaded; an unclipped one rests on the jaws); if the force's line still
-    reaches the seat, it lifts ``VERIFY_RISE`` higher: a clipped cable is held
-    down there (lightly: a weak clip is not pulled open), one that slid down
-    beside the clip rises with the line; if the line stays down, the cable is
-    in and the model gets a fixed point at q.
+    ``VERIFY_RISE`` over the straight line from c through the seat (a clipped
+    cable is held down there, lightly: a weak clip is not pulled open; an
+    unclipped one, on the jaws or beside the clip, rises with the line); if
+    the force's line still reaches the seat, the cable is in and the model
+    gets a fixed point at q.
     If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
-    A push that goes down to ``MAX_ANGLE`` or the table without a snap (the
-    cable slid down beside the jaws) backs up and aligns again, aiming
-    ``BESIDE`` across the slot, once each way.
-
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
-    table on every aim (``TABLE_CLEARANCE``; the message gives the planned press against
+    table (``TABLE_CLEARANCE``; the message gives the planned press against
     the clip's push force), or the cable did not stay in after the last
     attempt; ``precondition`` if the clip is not between the contact and
     the gripper or its slot is across the cable; ``slipped`` if the cable
@@ -132,7 +118,7 @@ class SingleArmClipping(Primitive):
     name = "single_arm_clipping"
     letter = "F"
 
-    def __init__(self, arm: Arm, clip: str, timeout: float = 45.0) -> None:
+    def __init__(self, arm: Arm, clip: str, timeout: float = 20.0) -> None:
         super().__init__(timeout)
         if arm not in ("left", "right"):
             raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
@@ -191,11 +177,6 @@ class SingleArmClipping(Primitive):
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
         self._base_force = ctx.tension if ctx.tension is not None else 2.0
         self._since = obs.time
-        self._lateral = 0.0  # aim this far [m] beside the seat, across the slot
-        self._h0 = 0.0  # the line's height at the clip on the straight line [m]
-        self._angle_proof = 0.0
-        self._free_rise = VERIFY_RISE
-        self._misses = 0
 
     def _leave(
         self, ctx: PrimitiveContext, state: TensionState, p_gripper: np.ndarray, info: ClipInfo
@@ -259,8 +240,6 @@ class SingleArmClipping(Primitive):
         """The gripper's set point while aligning: on the line from c over the clip."""
         c = self._contact
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
-        across = np.array([-float(self.info.slot[1]), float(self.info.slot[0]), 0.0])
-        through = through + self._lateral * across  # after a miss, a little to the side
         w = (through - c) / float(np.linalg.norm(through - c))
         radius = float(np.linalg.norm(obs.gripper(self.arm).position - c))
         target: np.ndarray = c + radius * w
@@ -317,13 +296,9 @@ class SingleArmClipping(Primitive):
                 rise = float(self._contact[2] - self.info.position[2])
                 run = float(np.hypot(*(self.info.position - self._contact)[:2]))
                 self._angle_rest = max(math.atan2(rise, run), self._angle0)
-                # the proof then lifts the gripper VERIFY_RISE over that line: a
-                # free cable's line rises at the clip by the lever d / (d + r)
+                # the proof lifts the cable VERIFY_RISE over that line at the gripper
                 reach = math.hypot(float(offset @ self._out), float(offset[2]))
-                self._angle_proof = self._angle_rest - math.atan2(VERIFY_RISE, max(reach, 1e-3))
-                d = float(np.hypot(*(self._exit - self._contact)[:2]))
-                r = max(float(offset @ self._out), 1e-3)
-                self._free_rise = VERIFY_RISE * d / (d + r)
+                self._angle_rest -= math.atan2(VERIFY_RISE, max(reach, 1e-3))
                 self.force = self._plan_force(me.position, state.tension, ctx)
         elif self.phase in ("push", "press"):
             force = self.force
@@ -336,11 +311,6 @@ class SingleArmClipping(Primitive):
                 # felt the snap: press on a little (the line's height is
                 # a few mm uncertain), then lift and verify
                 self.phase, self._pressed_to = "press", self.angle + PRESS_EXTRA
-            elif (self.angle > MAX_ANGLE or target[2] < self.floor) and self._misses < len(BESIDE):
-                # the cable went down beside the jaws: back up, aim a little to the side
-                self._lateral = BESIDE[self._misses]
-                self._misses += 1
-                self.phase = "retreat"
             elif self.angle > MAX_ANGLE or target[2] < self.floor:
                 where = "the table" if target[2] < self.floor else "the steepest bend"
                 self.outcome = Outcome.failure(
@@ -348,46 +318,15 @@ class SingleArmClipping(Primitive):
                     f"no snap felt into {self.clip} down to {where}"
                     f" (cable {1e3 * (height or 0.0):.1f} mm above its seat; the bend"
                     f" presses about {self.press:.1f} N of the {self.info.push_force:.1f} N it"
-                    " needs; aimed at the slot and "
-                    f"{', '.join(f'{1e3 * b:+.0f}' for b in BESIDE)} mm beside it):"
-                    " hold the cable closer to the clip",
+                    " needs): hold the cable closer to the clip",
                 )
-        elif self.phase == "prove":  # lift higher: a clipped cable stays down at the seat
-            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle_proof)
-            target = self._pivot(obs)
-            settled = obs.time - self._since > 0.3
-            if settled and self.angle <= self._angle_proof and norm3(me.position - target) < 0.003:
-                rose = (self.sensing.height or 0.0) - self._h0
-                if rose > PROOF_FRACTION * self._free_rise and self._misses < len(BESIDE):
-                    # it lay beside the jaws: back up, aim a little to the side
-                    self._lateral = BESIDE[self._misses]
-                    self._misses += 1
-                    self.phase = "retreat"
-                elif rose > PROOF_FRACTION * self._free_rise:
-                    self.outcome = Outcome.failure(
-                        "not_clipped",
-                        f"the cable is not in {self.clip}: lifting the gripper "
-                        f"{1e3 * VERIFY_RISE:.0f} mm, its line at the clip rose "
-                        f"{1e3 * rose:.1f} mm (a free cable's would rise "
-                        f"{1e3 * self._free_rise:.1f} mm): it lies beside or on the jaws",
-                    )
-                else:
-                    self._verify(ctx)
-        elif self.phase == "retreat":  # back up over the clip, then align again
-            self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, self._angle0)
-            target = self._pivot(obs)
-            if self.angle <= self._angle0 and norm3(me.position - target) < 0.003:
-                self.phase, self._since = "align", obs.time
         else:  # lift back over the clip and feel whether the cable stayed in
             rest = self._angle_rest
             self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, rest)
             target = self._pivot(obs)
             settled = obs.time - self._since > 0.3
             if settled and self.angle <= rest and norm3(me.position - target) < 0.003:
-                if self.sensing.seated:
-                    self._h0 = self.sensing.height or 0.0
-                    self.phase, self._since = "prove", obs.time
-                elif self.attempts >= ATTEMPTS:
+                if self.sensing.seated or self.attempts >= ATTEMPTS:
                     self._verify(ctx)
                 else:  # not in: push again, deeper than the last time
                     self.attempts += 1
