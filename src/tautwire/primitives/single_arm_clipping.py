@@ -37,46 +37,8 @@ JAW_TOP = 0.008
 #: Lowest height [m] above the table the gripper's tool centre point may go
 #: (its finger pads reach 8 mm below it).
 TABLE_CLEARANCE = 0.02
-#: The push starts when the gripper is this close [m] to the line over the clip,
-#: across the cable (the cable's line then misses the slot by less; along the
-#: cable the tension decides where the gripper stands) ...
-ALIGN_TOLERANCE = 0.001
-#: ... or, after this long [s] aligning, within 3 mm.
-ALIGN_PATIENCE = 3.0
-#: Height [m] over the straight line from the contact through the seat to which the
-#: gripper lifts to prove the cable is in: a clipped cable stays held down at the
-#: seat (the force's line still reaches it), a cable that slid down beside the
-#: clip's wall rises with the line (on the harness board one lay 8 mm beside the
-#: slot, its line 2.6 mm from it, at the straight line itself).
-VERIFY_RISE = 0.005
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
-
-
-def bend_side(
-    ctx: PrimitiveContext, contact: int | None, c: np.ndarray, p_gripper: np.ndarray
-) -> float:
-    """The side of a peg at model point ``contact`` that the cable bends round, seen from above.
-
-    From the model's point before it (away from the gripper) through the
-    peg to the gripper: +1 when the cable turns left (counter-clockwise) round
-    the peg, which then lies on its left (as
-    :func:`~tautwire.primitives.peg_leave.wrap_side`), -1 right, 0 when
-    there is no point before it or the cable runs straight.
-    """
-    points = ctx.graph.points
-    g = ctx.estimator.gripper_index
-    if contact is None or g is None:
-        return 0.0
-    before = contact - 1 if g > contact else contact + 1
-    if not 0 <= before < len(points):
-        return 0.0
-    a = c - points[before].position
-    b = p_gripper - c
-    cross = float(a[0] * b[1] - a[1] * b[0])
-    if abs(cross) < 1e-9 * max(float(np.linalg.norm(a[:2]) * np.linalg.norm(b[:2])), 1e-12):
-        return 0.0
-    return math.copysign(1.0, cross)
 
 
 class SingleArmClipping(Primitive):
@@ -95,11 +57,9 @@ class SingleArmClipping(Primitive):
     (:class:`PivotPress`, from the contact, the clip's design and k). The
     snap is felt (:class:`ClipHeight`): the force's line drops from the jaws
     to the seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back
-    ``VERIFY_RISE`` over the straight line from c through the seat (a clipped
-    cable is held down there, lightly: a weak clip is not pulled open; an
-    unclipped one, on the jaws or beside the clip, rises with the line); if
-    the force's line still reaches the seat, the cable is in and the model
-    gets a fixed point at q.
+    to the straight line from c through the seat (a clipped cable lies there
+    unloaded; an unclipped one rests on the jaws); if the force's line still
+    reaches the seat, the cable is in and the model gets a fixed point at q.
     If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
@@ -186,12 +146,9 @@ class SingleArmClipping(Primitive):
         A point contact (an anchor, a clip, an estimated point): the
         contact itself. A peg: the cable leaves it tangentially, its radius
         (the filter's estimate, else the design's peg + cable radius) beside
-        the axis point the model holds, on the side the cable bends round it
-        (:func:`bend_side`: from the model point before it to the gripper;
-        the force's line, :func:`~tautwire.primitives.peg_leave.wrap_side`,
-        passes the estimated axis too closely to tell, the axis being fitted
-        to those lines, and on the harness board it told the wrong side, 17 mm
-        off), the tangent point of the line over the clip
+        the axis point the model holds, on the side it wraps it now
+        (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
+        line): the tangent point of the line over the clip
         (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
         axis would put the cable a radius beside the slot.
         """
@@ -207,9 +164,7 @@ class SingleArmClipping(Primitive):
             if estimate is not None and estimate.radius is not None
             else est.round_fixtures[label][1]
         )
-        side = bend_side(ctx, i, c, p_gripper)
-        if side == 0.0:
-            side = wrap_side(c, p_gripper, state.direction)
+        side = wrap_side(c, p_gripper, state.direction)
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
 
@@ -275,10 +230,7 @@ class SingleArmClipping(Primitive):
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
-            error = me.position - target
-            across = error - state.direction * float(state.direction @ error)
-            close = ALIGN_TOLERANCE if obs.time - self._since < ALIGN_PATIENCE else 0.003
-            if float(np.linalg.norm(across)) < close and float(np.linalg.norm(error)) < 0.003:
+            if float(np.linalg.norm(me.position - target)) < 0.003:
                 self.phase, self._since = "push", obs.time
                 out = me.position - self.info.position
                 out[2] = 0.0
@@ -296,9 +248,6 @@ class SingleArmClipping(Primitive):
                 rise = float(self._contact[2] - self.info.position[2])
                 run = float(np.hypot(*(self.info.position - self._contact)[:2]))
                 self._angle_rest = max(math.atan2(rise, run), self._angle0)
-                # the proof lifts the cable VERIFY_RISE over that line at the gripper
-                reach = math.hypot(float(offset @ self._out), float(offset[2]))
-                self._angle_rest -= math.atan2(VERIFY_RISE, max(reach, 1e-3))
                 self.force = self._plan_force(me.position, state.tension, ctx)
         elif self.phase in ("push", "press"):
             force = self.force
