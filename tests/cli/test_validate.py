@@ -16,12 +16,12 @@ def test_valid_scenario_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> 
     out, err = capsys.readouterr()
     assert status == 0 and err == ""
     assert "scenario 'harness'" in out and "valid" in out
-    assert "fixtures: 8" in out and "cables: 2" in out and "task steps: 28" in out
-    assert "W1: 0.6 m, 200 N/m, route A1, held by left at 0.35 m" in out
-    assert "target route: P1 (left) -> C1 -> C2" in out
-    assert "target route: P2 (right, wind 1) -> C3 -> C4" in out
-    assert "8. F single_arm_clipping(arm=left, clip=C1, cable=W1)" in out
-    assert "2. move(arm=left, to=[0.4455, 0.1605, 0.08], taut=True, cable=W1)" in out
+    assert "fixtures: 10" in out and "cables: 2" in out and "task steps: 41" in out
+    assert "W1: 0.8 m, 200 N/m, route A1, held by left at 0.3 m" in out
+    assert "target route: C1 -> P1 (left) -> C2 -> C3" in out
+    assert "target route: P2 (right, wind 1) -> C4 -> C5 -> P3 (right)" in out
+    assert "4. F single_arm_clipping(arm=left, clip=C1, cable=W1)" in out
+    assert "2. move(arm=left, to=[0.3777, 0.12, 0.1172], taut=True, observe=True, cable=W1)" in out
 
 
 def test_invalid_scenario_gives_one_line_on_stderr(

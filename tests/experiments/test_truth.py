@@ -20,7 +20,7 @@ from tautwire.experiments.truth import (
 )
 from tautwire.model import PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
-from tautwire.sim import PegSpec, SimWorld
+from tautwire.sim import ClipSpec, PegSpec, SimWorld
 from tautwire.sim.ground_truth import GroundTruth, TautSpan
 from tests.sim.scenes import anchor_and_gripper, rest
 
@@ -321,3 +321,69 @@ def test_the_true_stiffness_is_what_the_gripper_feels(bend: float) -> None:
     assert nominal is not None
     if not bend:  # from an anchor the closed form holds
         assert nominal == pytest.approx(200.0) and truth_k == pytest.approx(200.0, rel=0.03)
+
+
+@pytest.mark.parametrize(
+    ("seat", "via"),
+    [
+        ([0.15, 0.0, 0.3], True),  # routed through the clip: in its jaws
+        ([0.15, 0.012, 0.3], False),  # the cable runs 12 mm beside the slot
+        ([0.15, 0.0, 0.29], False),  # the cable lies over the jaws, not pushed in
+    ],
+)
+def test_a_missed_clip_reads_as_a_false_success(seat: list[float], via: bool) -> None:
+    """F or C reporting a clip that the cable is not in disagrees with the simulator."""
+    world = anchor_and_gripper(
+        [0.0, 0.0, 0.3],
+        [0.3, 0.0, 0.3],
+        0.31,
+        fixtures=(ClipSpec("C", seat, 0.0, 2.0),),
+        via=("C",) if via else (),
+    )
+    rest(world, 0.3)
+    truth = GroundTruth(world)
+    watch = StepWatch(truth, "W", "left")
+    for _ in range(20):
+        world.step()
+        watch.tick(world.time)
+    watch.finish()
+    graph = _graph([("fixed", "A", np.array([0.0, 0.0, 0.3]), None)], world.gripper_pose("left")[0])
+    if via:  # the clipping primitives put the clip's point at its seat
+        graph = _graph(
+            [("fixed", "A", np.array([0.0, 0.0, 0.3]), None), ("fixed", "C", np.array(seat), None)],
+            world.gripper_pose("left")[0],
+        )
+    ctx = make_context(graph, "left")
+    for letter in ("F", "C"):
+        claim = check_step(letter, {"clip": "C"}, True, watch, ctx, truth)
+        assert claim.agrees is via, claim.detail
+        assert ("not in the jaws of C" in claim.detail) is not via
+        # the same step reported failed claims nothing
+        assert check_step(letter, {"clip": "C"}, False, watch, ctx, truth).agrees
+
+
+def test_a_trusted_clip_point_is_right_anywhere_along_its_slot() -> None:
+    """The cable runs straight through a clip: its seat and its exit both stand for it."""
+    seat = np.array([0.15, 0.0, 0.3])
+    world = anchor_and_gripper(
+        [0.0, 0.0, 0.3],
+        [0.3, 0.0, 0.3],
+        0.31,
+        fixtures=(ClipSpec("C", list(seat), 0.0, 2.0),),
+        via=("C",),
+    )
+    rest(world, 0.3)
+    truth = GroundTruth(world)
+    gripper = world.gripper_pose("left")[0]
+
+    def judged(point: np.ndarray) -> bool:
+        graph = _graph(
+            [("fixed", "A", np.array([0.0, 0.0, 0.3]), None), ("fixed", "C", point, 0.001)],
+            gripper,
+        )
+        return judge_model(check_contacts(graph, truth, "W", 0.01)).agrees
+
+    assert judged(seat)  # where F and C put it
+    assert judged(seat + np.array([0.014, 0.0, 0.0]))  # near the slot's exit
+    assert not judged(seat + np.array([0.0, 0.01, 0.0]))  # 10 mm beside the slot
+    assert not judged(seat + np.array([0.05, 0.0, 0.0]))  # 35 mm past the exit

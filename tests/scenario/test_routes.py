@@ -73,11 +73,12 @@ def test_move_and_release_steps() -> None:
     task = parse_scenario(edit(step, step + moves)).task
     move, lift, release = task[1:4]
     assert (move.primitive, move.letter) == ("move", "")
-    assert move.params == {"arm": "left", "to": [0.3, 0.1, 0.2], "taut": True}
+    assert move.params == {"arm": "left", "to": [0.3, 0.1, 0.2], "taut": True, "observe": True}
     assert lift.params == {
         "arm": "right",
         "by": [0.0, 0.0, 0.05],
         "taut": False,
+        "observe": True,
         "orientation": [1.0, 0.0, 0.0, 0.0],
     }
     assert release.params == {"arm": "left", "cable": "W1"}
@@ -103,7 +104,7 @@ def test_wrong_moves(move: str, words: str) -> None:
 def test_the_harness_task_is_what_the_planner_makes() -> None:
     """scenarios/harness.yaml carries its routes and the task planned from them."""
     harness = load_scenario(SCENARIOS / "harness.yaml")
-    assert all(len(c.route) >= 3 for c in harness.cables)
+    assert all(len(c.route) >= 4 for c in harness.cables)
     assert any(e.wind for c in harness.cables for e in c.route)
     planned = plan_scenario(harness)
     assert [{"primitive": s.primitive, **s.params} for s in harness.task] == planned.task()

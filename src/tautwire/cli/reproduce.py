@@ -50,8 +50,12 @@ TABLE1_TRIAL_TIMEOUT = 600.0
 #: The robustness campaign by default: trials, and trials at a time.
 ROBUSTNESS_TRIALS = 200
 ROBUSTNESS_WORKERS = 2
+#: The harness campaign by default: boards run at a time.
+HARNESS_WORKERS = 2
+#: Wall time [s] after which a harness board is stopped as hung (a board takes minutes).
+HARNESS_TRIAL_TIMEOUT = 1800.0
 #: The campaigns, which take the campaign options (--trials, --workers, ...).
-CAMPAIGNS = ("table1", "robustness")
+CAMPAIGNS = ("table1", "robustness", "harness")
 
 #: What can be reproduced so far, by name (besides the campaigns, which take more options).
 REPRODUCTIONS: dict[str, Callable[[Path, int], dict[str, Any]]] = {
@@ -69,6 +73,8 @@ Examples:
   tautwire reproduce table1 --resume            # finish an interrupted campaign
   tautwire reproduce table1 --only D:17         # rerun one trial and print it
   tautwire reproduce robustness --trials 40 --no-faults
+  tautwire reproduce harness                    # the harness board: figure, GIF, steps, JSON
+  tautwire reproduce harness --boards 10 --workers 2 --seed 0
 
 \b
 Without --json, a table (lengths in mm, forces in N) on stdout and the
@@ -140,6 +146,12 @@ files under --out; a campaign shows a progress bar on stderr.
     is_flag=True,
     help="robustness: run each trial clean only (no fault run)",
 )
+@click.option(
+    "--boards",
+    type=click.IntRange(min=1),
+    default=None,
+    help="harness: run this many random boards instead of the built-in one",
+)
 def reproduce(
     name: str,
     out_dir: str | None,
@@ -154,17 +166,54 @@ def reproduce(
     trial_timeout: float | None,
     resume: bool,
     no_faults: bool,
+    boards: int | None,
 ) -> int:
-    """Regenerate the paper's figure or table NAME (fig5a, fig5b, fig5c, table1), or robustness.
+    """Regenerate the paper's figure or table NAME (fig5a-c, table1, harness), or robustness.
 
     robustness runs the campaign of randomised single-fixture scenes, each
     trial clean and with one fault, scored against the simulator's truth.
+    harness runs the paper's harness experiment on the built-in board, or
+    with --boards N a campaign of N random boards.
     """
     if name not in REPRODUCTIONS and name not in CAMPAIGNS:
         raise InvalidArgumentError(
             f"no reproduction named {name!r}; available: {', '.join([*REPRODUCTIONS, *CAMPAIGNS])}"
         )
     out = Path(out_dir) if out_dir is not None else Path("out") / name
+    if boards is not None and name != "harness":
+        raise InvalidArgumentError(f"--boards: only for harness, not {name}")
+    if name == "harness":
+        others = {
+            "--trials": trials,
+            "--letters": letters,
+            "--only": only,
+            "--resume": resume or None,
+            "--no-faults": no_faults or None,
+        }
+        given = [option for option, value in others.items() if value is not None]
+        if given:
+            raise InvalidArgumentError(f"{', '.join(given)}: not for harness")
+        if boards is None:
+            campaign_only = {
+                "--workers": workers,
+                "--backend": backend,
+                "--address": address,
+                "--trial-timeout": trial_timeout,
+            }
+            given = [option for option, value in campaign_only.items() if value is not None]
+            if given:
+                raise InvalidArgumentError(f"{', '.join(given)}: only with --boards")
+            return _harness(out, seed, as_json)
+        return _harness_boards(
+            out,
+            seed,
+            as_json,
+            boards=boards,
+            workers=HARNESS_WORKERS if workers is None else workers,
+            backend=backend or "local",
+            address=address,
+            trial_timeout=HARNESS_TRIAL_TIMEOUT if trial_timeout is None else trial_timeout,
+        )
     if name == "robustness":
         table1_only = {"--letters": letters, "--resume": resume or None}
         given = [option for option, value in table1_only.items() if value is not None]
@@ -460,6 +509,106 @@ def _robustness(
     if report["interrupted"]:
         click.echo(
             f"tautwire: error: interrupted: {report['finished']} of {report['planned']} trials "
+            f"finished; their results are written under {out}/",
+            err=True,
+        )
+        return 130
+    return 0
+
+
+def _harness(out: Path, seed: int, as_json: bool) -> int:
+    """Run the built-in harness board; print its steps and errors (or the JSON)."""
+    from tautwire.experiments.harness import reproduce_harness
+
+    with Console(stderr=True).status("reproducing harness (the built-in board) ..."):
+        report = reproduce_harness(out, seed)
+    if as_json:
+        click.echo(json.dumps(report, indent=2))
+    else:
+        Console().print(_harness_table(report))
+        Console().print(f"written under {out}/")
+    return 0
+
+
+def _harness_table(report: dict[str, Any]) -> Table:
+    """model_error and shape_error beside the paper's numbers, and the run's outcome."""
+    table = Table(
+        title=f"harness {report['board']} (seed {report['seed']}): "
+        f"{'success' if report['success'] else 'failure'}, "
+        f"{report['false_successes']} false successes, {len(report['steps'])} steps"
+    )
+    for column in ("[mm]", "paper (model)", "goal (model)", "model_error", "shape_error"):
+        table.add_column(column, justify="right" if column != "[mm]" else "left")
+    for key in ("horizontal_mean", "horizontal_max", "vertical_mean", "vertical_max"):
+        _add_row(
+            table,
+            key.replace("_", " "),
+            _mm(report["paper"]["model_error"][key]),
+            _mm(report["goal"]["model_error"][key]),
+            _mm((report["model_error"] or {}).get(key)),
+            _mm((report["shape_error"] or {}).get(key)),
+        )
+    return table
+
+
+def _harness_boards(
+    out: Path,
+    seed: int,
+    as_json: bool,
+    *,
+    boards: int,
+    workers: int,
+    backend: str,
+    address: str | None,
+    trial_timeout: float,
+) -> int:
+    """Run the random-board campaign with a progress bar on stderr; 130 if interrupted."""
+    from tautwire.experiments.harness import reproduce_harness_boards
+
+    if address is not None and backend != "ray":
+        raise InvalidArgumentError("--address is for --backend ray only")
+    err = Console(stderr=True)
+    with Progress(*_progress_columns(), console=err) as bar:
+        task = bar.add_task(f"harness boards ({backend})", total=boards, failed=0)
+
+        def show(finished: int, planned: int, failures: int) -> None:
+            bar.update(task, completed=finished, total=planned, failed=failures)
+
+        report = reproduce_harness_boards(
+            boards,
+            workers,
+            seed,
+            out,
+            backend,
+            show,
+            address=address,
+            trial_timeout=trial_timeout if backend == "local" else None,
+        )
+    if as_json:
+        click.echo(json.dumps(report, indent=2))
+    else:
+        table = Table(
+            title=f"harness: {report['completed']} of {report['boards']} boards completed, "
+            f"{report['false_successes']} false successes, {report['over_force_limit']} over "
+            f"the force limit, {report['wall_time']:.0f} s"
+        )
+        for column in ("[mm]", "model median", "model p90", "shape median", "shape p90"):
+            table.add_column(column, justify="right" if column != "[mm]" else "left")
+        for key in ("horizontal_mean", "horizontal_max", "vertical_mean", "vertical_max"):
+            m, s = report["model_error"][key], report["shape_error"][key]
+            _add_row(
+                table,
+                key.replace("_", " "),
+                _mm(m["median"]),
+                _mm(m["p90"]),
+                _mm(s["median"]),
+                _mm(s["p90"]),
+            )
+        Console().print(table)
+        Console().print(f"written under {out}/")
+    if report["interrupted"]:
+        click.echo(
+            f"tautwire: error: interrupted: {report['boards']} of {report['planned']} boards "
             f"finished; their results are written under {out}/",
             err=True,
         )

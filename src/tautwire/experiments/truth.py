@@ -189,8 +189,18 @@ def contact_tolerance(truth: GroundTruth, fixture: str) -> float:
 
 
 def true_contacts(truth: GroundTruth, cable: str) -> dict[str, FloatArray]:
-    """The true contact point [m] of every fixture ``cable`` touches, by fixture name."""
-    return {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
+    """The true contact point [m] of every fixture ``cable`` touches, by fixture name.
+
+    A clip that holds the cable in its jaws (:meth:`GroundTruth.clipped`)
+    counts even where the cable lies in its seat unloaded, touching none of
+    its geoms (F and C lift back to leave it so); its point is then the
+    cable's point nearest the seat.
+    """
+    out = {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
+    for name in truth.fixture_names():
+        if name not in out and truth.fixture_type(name) == "clip" and truth.clipped(name, cable):
+            out[name] = truth.seat(name, cable)
+    return out
 
 
 def check_contacts(
@@ -218,7 +228,7 @@ def check_contacts(
     points = [p for p in graph.points if p.kind in ("contact", "fixed")]
     for k, pt in enumerate(points):
         if pt.label in fixtures:
-            checks.append(_check(truth, pt.label, pt, real, trusted_std, claimed))
+            checks.append(_check(truth, pt.label, pt, real, trusted_std, claimed, cable))
         else:
             checks.append(None)
             unnamed.append(k)
@@ -236,7 +246,7 @@ def check_contacts(
         unnamed.remove(k)
         d, name = nearest(k)
         if name is not None and d <= ASSOCIATION_RADIUS:
-            checks[k] = _check(truth, name, points[k], real, trusted_std, claimed)
+            checks[k] = _check(truth, name, points[k], real, trusted_std, claimed, cable)
         else:
             where = "no true contact left" if name is None else f"{1e3 * d:.0f} mm from {name}"
             checks[k] = _made_up(
@@ -272,6 +282,7 @@ def _check(
     real: dict[str, FloatArray],
     trusted_std: TrustLimit,
     claimed: set[str],
+    cable: str,
 ) -> ContactCheck:
     if name not in real:
         return _made_up(pt, trusted_std, f"the cable does not touch {name}")
@@ -281,6 +292,13 @@ def _check(
     std = _std(pt.covariance)
     trusted = std is not None and float(np.max(std)) <= _limit(trusted_std, pt)
     t = real[name]
+    if truth.fixture_type(name) == "clip":
+        # the cable runs straight through the slot: its point there nearest the
+        # estimate (F and C put the clip's point at its seat; the lines meet at
+        # the slot's end the cable leaves by)
+        seat = truth.seat(name, cable)
+        entry = seat + (seat - t)
+        t = _nearest_on_segment(entry, t, pt.position)
     return ContactCheck(
         pt.label,
         name,
@@ -292,6 +310,15 @@ def _check(
         std,
         trusted,
     )
+
+
+def _nearest_on_segment(a: FloatArray, b: FloatArray, p: FloatArray) -> FloatArray:
+    """The point of the segment from ``a`` to ``b`` nearest ``p`` [m]."""
+    ab = b - a
+    n2 = float(ab @ ab)
+    t = 0.0 if n2 < 1e-18 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+    out: FloatArray = a + t * ab
+    return out
 
 
 def judge_model(checks: list[ContactCheck]) -> TruthCheck:

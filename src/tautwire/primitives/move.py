@@ -50,7 +50,7 @@ class Move(Primitive):
     context's sensing gripper (its force is what keeps the tension).
     Model edits: none (the estimator maps the gripper's new position onto
     the path graph; contacts the cable comes to bear on are found as in
-    every primitive).
+    every primitive, unless ``observe`` is off).
 
     Success: the position error (with ``taut``: its part across the
     cable) is within ``tolerance``, the orientation within
@@ -68,6 +68,13 @@ class Move(Primitive):
         tolerance: Largest remaining position error [m].
         angle_tolerance: Largest remaining orientation error [rad].
         timeout: Longest run time [s]; default from the distance to go.
+        observe: Let the contact filter take the move's force lines. Off
+            where the move makes the cable bear on a new fixture on
+            purpose (sweeping it onto a peg): while the bend there grows
+            from nothing, the lines turn away from the contact the filter
+            holds too slowly for a change to show, and would pull its
+            estimate off; the primitive after the move estimates the new
+            contact.
     """
 
     name = "move"
@@ -84,6 +91,7 @@ class Move(Primitive):
         tolerance: float = 0.003,
         angle_tolerance: float = math.radians(2.0),
         timeout: float | None = None,
+        observe: bool = True,
     ) -> None:
         super().__init__(20.0 if timeout is None else timeout)
         if arm not in ("left", "right"):
@@ -106,6 +114,7 @@ class Move(Primitive):
         self.tolerance = float(tolerance)
         self.angle_tolerance = float(angle_tolerance)
         self._own_timeout = timeout is None
+        self.observe = bool(observe)
         self.target = np.zeros(3)
         self.error = math.inf  # remaining position error [m] (across the cable when taut)
         self._holds = False
@@ -130,6 +139,8 @@ class Move(Primitive):
                 f"(the {est.arm} gripper does): it cannot keep it taut",
             )
             return
+        if not self.observe:
+            est.observe_contacts = False
         if self._sensing:
             est.learn_elasticity = False  # the motion runs across the cable
             est.rotation = None

@@ -298,6 +298,12 @@ MOVES: tuple[PrimitiveSpec, ...] = (
             ParamSpec(
                 "taut", "flag", "keep the held cable under its present tension", default=True
             ),
+            ParamSpec(
+                "observe",
+                "flag",
+                "let the contact filter take the move's force lines (off: sweeping onto a peg)",
+                default=True,
+            ),
         ),
         one_of=("to", "by"),
     ),

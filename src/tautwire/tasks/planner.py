@@ -72,8 +72,27 @@ SLOT_ANGLE = MAX_SLOT_ANGLE - math.radians(5.0)
 MIN_LEAD = 0.04
 #: Cable [m] beyond the needed point a slide (E) or a hand-over leaves.
 LEAD = 0.08
+#: Least cable [m] a gripper keeps past a peg it winds the cable round: the
+#: span to it must be long enough to sense (a few of the simulated cable's
+#: segments outside the fingers) and to turn about.
+PEG_LEAD = 0.08
+#: Least horizontal distance [m] of a winding gripper from the cable's own
+#: span into the peg (the fingers would catch it).
+FINGER_CLEARANCE = 0.03
+#: Least horizontal distance [m] of the tool centre point from a fixture's body it
+#: passes lower than ``GRIPPER_ABOVE`` over its top (fingers and pads).
+GRIPPER_CLEARANCE = 0.02
+#: Height [m] over a fixture's top at which the tool centre point passes it (the
+#: harness board's slides pass clips 19 mm over their jaws unharmed).
+GRIPPER_ABOVE = 0.015
+#: The name of the collision of a winding gripper with its cable's span into the peg.
+OWN_SPAN = "the cable's own span"
+#: Cable [m] a slide (E) leaves beyond the gripper, so that the end stays in the fingers.
+TAIL = 0.03
 #: Angle [rad] past the tangent by which a move presses the cable onto a peg.
-CATCH = math.radians(15.0)
+CATCH = math.radians(8.0)
+#: Angle [rad] short of the tangent to a peg up to which a sweep is observed.
+TOUCH = math.radians(5.0)
 #: Largest turn [rad] about the last fixed point between two move waypoints.
 SWEEP_STEP = math.radians(30.0)
 #: Height [m] over a peg's top at which a lifted cable passes it.
@@ -82,10 +101,16 @@ OVER_PEG = 0.02
 SPAN = 0.12
 #: H grasps at least this far [m] from either end of the taut edge.
 GRASP_MARGIN = 0.04
+#: Least turn [rad] of I round a peg that the route goes on from (it finds the peg).
+MIN_WIND = math.radians(20.0)
 #: Wraps [rad] this small are left to the catch move (no I step).
 SMALL_TURN = math.radians(3.0)
 #: Decimals of the numbers in a plan (0.1 mm, 0.1 mrad).
 DIGITS = 4
+#: Height [m] a swept cable keeps over the top of a fixture it passes (beyond its radius).
+CLEARANCE = 0.005
+#: Steps [m] by which the height at which the cable passes a peg is raised to clear fixtures.
+PASS_STEP = 0.005
 
 
 class RouteError(TautwireError):
@@ -343,6 +368,93 @@ def _round(v: float) -> float:
     return round(float(v), DIGITS) + 0.0
 
 
+def fixture_top(fixture: BoardFixture) -> float | None:
+    """Height [m] of a fixture's top that a cable collides with (``None``: an anchor, no body)."""
+    if fixture.kind == "peg":
+        return fixture.position[2] + fixture.height
+    if fixture.kind == "clip":
+        return fixture.position[2] + JAW_TOP
+    return None
+
+
+def fixture_reach(fixture: BoardFixture) -> float:
+    """Horizontal radius [m] about a fixture's position inside which its body stands."""
+    if fixture.kind == "peg":
+        return fixture.radius
+    return 0.5 * fixture.length
+
+
+def gripper_collision(
+    point: FloatArray, fixtures: tuple[BoardFixture, ...], skip: frozenset[str] = frozenset()
+) -> Collision | None:
+    """The fixture (if any) that a gripper at ``point`` [m] would touch with its fingers."""
+    for fixture in fixtures:
+        top = fixture_top(fixture)
+        if top is None or fixture.name in skip:
+            continue
+        gap = float(np.linalg.norm(_flat(point - _vec(fixture.position))))
+        if gap < fixture_reach(fixture) + GRIPPER_CLEARANCE and point[2] < top + GRIPPER_ABOVE:
+            return Collision(fixture.name, float(point[2]), top + GRIPPER_ABOVE, "gripper")
+    return None
+
+
+def _segment_distance(p: FloatArray, a: FloatArray, b: FloatArray) -> float:
+    """Distance [m] from ``p`` to the segment from ``a`` to ``b``."""
+    ab = b - a
+    n2 = float(ab @ ab)
+    t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+    return float(np.linalg.norm(a + t * ab - p))
+
+
+@dataclass(frozen=True)
+class Collision:
+    """A taut cable segment (or the gripper holding it) that runs into a fixture.
+
+    Attributes:
+        fixture: the fixture's name.
+        height: the cable's height [m] where it passes the fixture.
+        needed: the least height [m] at which it clears the fixture's top.
+        by: what runs into it: the taut ``cable`` or the ``gripper`` (its fingers).
+    """
+
+    fixture: str
+    height: float
+    needed: float
+    by: Literal["cable", "gripper"] = "cable"
+
+
+def segment_collision(
+    start: FloatArray,
+    end: FloatArray,
+    fixtures: tuple[BoardFixture, ...],
+    cable_radius: float,
+    skip: frozenset[str] = frozenset(),
+) -> Collision | None:
+    """The fixture (if any) that the straight cable from ``start`` to ``end`` runs into.
+
+    The cable is taut, so it is the straight segment; a fixture is in its way
+    when the segment passes within the fixture's reach plus the cable's radius
+    (horizontally) below its top plus :data:`CLEARANCE`. The fixture of
+    ``skip`` (the one the cable leaves or is aimed at) is not checked.
+    """
+    a, b = _flat(start), _flat(end)
+    ab = b - a
+    n2 = float(ab @ ab)
+    for fixture in fixtures:
+        top = fixture_top(fixture)
+        if top is None or fixture.name in skip:
+            continue
+        p = _flat(_vec(fixture.position))
+        t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+        if float(np.linalg.norm(a + t * ab - p)) > fixture_reach(fixture) + cable_radius:
+            continue
+        height = float(start[2]) + t * float(end[2] - start[2])
+        needed = top + cable_radius + CLEARANCE
+        if height < needed:
+            return Collision(fixture.name, height, needed)
+    return None
+
+
 # ------------------------------------------------------------------ planner
 
 
@@ -359,11 +471,26 @@ class _Cable:
     entry: int | None = None  # 1-based route entry being planned
     fixture: str | None = None
     steps: list[int] = field(default_factory=list)
+    last: str | None = None  # the fixture at the last fixed point
 
     @property
     def free(self) -> float:
         """Cable [m] between the last fixed point and the gripper."""
         return self.at - self.s_contact
+
+
+@dataclass(frozen=True)
+class _PegMotion:
+    """How the gripper catches a peg and winds round it (see ``_Planner.peg_motion``)."""
+
+    moves: list[tuple[FloatArray, str]]
+    catch: FloatArray
+    wind: list[FloatArray]
+    z_grip: float
+    collision: Collision | None
+    what: str
+    catch_from: int  # the first move (index) that bends the cable onto the peg
+    rest: float  # the turn [rad] I winds after the catch
 
 
 class _Planner:
@@ -393,6 +520,8 @@ class _Planner:
             elif isinstance(value, list):
                 value = [_round(c) for c in value]
             values[key] = value
+        if primitive == "move":
+            values.setdefault("observe", True)
         values["cable"] = cable.spec.name
         cable.steps.append(len(self.steps))
         self.steps.append(PlannedStep(primitive, values, why))
@@ -464,6 +593,7 @@ class _Planner:
             )
         anchor = _vec(start.position)
         cable = _Cable(spec, arm, at, _vec(self.robot.grippers[arm]), anchor, 0.0)
+        cable.last = spec.start
         # the cable starts through its via fixtures: the route must begin with them
         entries = list(enumerate(spec.route, start=1))
         for k, name in enumerate(spec.via):
@@ -566,6 +696,7 @@ class _Planner:
         if fixture.kind == "clip":
             self.advance_clip(cable, fixture)
             return
+        cable.last = fixture.name
         if entry.wind:
             raise self.fail(cable, "the initial routing (via) lays no windings")
         sign = 1.0 if entry.side == "left" else -1.0
@@ -602,7 +733,11 @@ class _Planner:
         sign = 1.0 if entry.side == "left" else -1.0
         u_in, t1, turn, rho = self.wrap(cable, peg, entry, following)
         to_peg = float(np.linalg.norm(_flat(t1 - cable.contact)))
-        need = to_peg + rho * turn + MIN_LEAD
+        lead = PEG_LEAD
+        if turn > math.pi:
+            # the winding passes over the span into the peg: the gripper goes round beyond it
+            lead = max(lead, to_peg + FINGER_CLEARANCE)
+        need = to_peg + rho * turn + lead
         self.ensure_free(cable, need, "to pass the peg")
         # the height at which the cable passes the peg, and the gripper's height for it
         base, top = peg.position[2], peg.position[2] + peg.height
@@ -612,21 +747,118 @@ class _Planner:
                 cable, f"the peg is {peg.height:.3f} m high, too low to catch the cable"
             )
         c = cable.contact
+        # the lowest pass height (from the cable's own height up) whose sweep and
+        # winding keep the cable over every other fixture
         z_pass = min(max(float(c[2]), lo), hi)
-        reach = cable.free - rho * CATCH  # from the last fixed point to the gripper, caught
-        z_grip = float(c[2]) + (z_pass - float(c[2])) * reach / max(to_peg, 1e-6)
-        if z_grip < TABLE_CLEARANCE:
+        while True:
+            motion = self.peg_motion(cable, entry, peg, following, u_in, turn, rho, to_peg, z_pass)
+            if motion.collision is None or z_pass >= hi:
+                break
+            z_pass = min(z_pass + PASS_STEP, hi)
+        if motion.collision is not None and motion.collision.fixture == OWN_SPAN:
+            raise self.fail(
+                cable,
+                f"winding round the peg takes the gripper through the cable's own span into "
+                f"it (expected the gripper at least {FINGER_CLEARANCE:g} m beside that span or "
+                f"above it; hold the cable further out or the peg higher)",
+            )
+        if motion.collision is not None:
+            hit = motion.collision
+            raise self.fail(
+                cable,
+                f"{motion.what} takes the {hit.by} into {hit.fixture}: it passes at z = "
+                f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m, and the "
+                f"cable cannot pass the peg higher than z = {hi:.3f} m",
+            )
+        if following is not None and motion.rest < MIN_WIND:
+            raise self.fail(
+                cable,
+                f"the cable bends only {math.degrees(motion.rest):.0f} deg round the peg after "
+                f"the catch before it would point at {following.fixture} (expected at least "
+                f"{math.degrees(MIN_WIND):.0f} deg: I finds the peg that the next step aims from)",
+            )
+        if motion.z_grip < TABLE_CLEARANCE:
             raise self.fail(
                 cable,
                 f"the cable from {_fmt(c)} can pass the peg only below z = {hi:.3f} m, and "
-                f"the gripper would go down to z = {z_grip:.3f} m (expected at least "
+                f"the gripper would go down to z = {motion.z_grip:.3f} m (expected at least "
                 f"{TABLE_CLEARANCE:g} m above the board)",
             )
+        for point, _ in motion.moves:
+            self.check_reach(cable, point, "catching the peg")
+        for point in motion.wind:
+            self.check_reach(cable, point, "winding round the peg")
+        for k, (point, why) in enumerate(motion.moves):
+            if k < motion.catch_from:
+                self.emit(
+                    cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True
+                )
+            else:
+                self.emit(
+                    cable,
+                    "move",
+                    why,
+                    arm=cable.arm,
+                    to=[float(v) for v in point],
+                    taut=True,
+                    observe=False,
+                )
+        cable.gripper = motion.catch
+        rest = motion.rest
+        if rest > SMALL_TURN:
+            # the moves kept the gripper's orientation while the cable swept round
+            self.emit(cable, "gripper_alignment", "align the gripper with the cable", arm=cable.arm)
+            radius = float(np.linalg.norm(_flat(motion.catch - _vec(peg.position))))
+            centre = _vec(peg.position)
+            centre[2] = motion.z_grip
+            start = _flat(motion.catch - centre)
+            turns = (
+                f", {entry.wind} full turn{'s' if entry.wind != 1 else ''}" if entry.wind else ""
+            )
+            self.emit(
+                cable,
+                "rotate_around_feature_point",
+                f"wind the cable round the peg ({math.degrees(rest):.0f} deg{turns})",
+                arm=cable.arm,
+                angle=sign * rest,
+                axis=[0.0, 0.0, 1.0],
+                about=peg.name,
+            )
+            left = max(radius - rho * rest, MIN_LEAD)
+            cable.gripper = centre + _turn(_unit(start), sign * rest) * left
+        self.advance_peg(cable, peg, entry, following)
+        cable.contact[2] = z_pass
+        cable.last = peg.name
+
+    def peg_motion(
+        self,
+        cable: _Cable,
+        entry: RouteEntry,
+        peg: BoardFixture,
+        following: RouteEntry | None,
+        u_in: FloatArray,
+        turn: float,
+        rho: float,
+        to_peg: float,
+        z_pass: float,
+    ) -> _PegMotion:
+        """The moves that catch ``peg`` with the cable at ``z_pass`` [m], and the winding after.
+
+        The moves sweep the cable about the last fixed point onto the peg from
+        the side the route asks for, after lifting it over the peg if it lies
+        on the other side; the winding (I) turns the gripper round the peg.
+        Every position of the taut cable on the way is checked against the
+        board's other fixtures (the first collision is returned).
+        """
+        sign = 1.0 if entry.side == "left" else -1.0
+        c = cable.contact
+        top = peg.position[2] + peg.height
+        reach = cable.free - rho * CATCH  # from the last fixed point to the gripper, caught
+        z_grip = float(c[2]) + (z_pass - float(c[2])) * reach / max(to_peg, 1e-6)
         u_catch = _turn(u_in, sign * CATCH)
         horizontal = math.sqrt(max(reach * reach - (z_grip - float(c[2])) ** 2, 1e-6))
         catch = c + u_catch * horizontal
         catch[2] = z_grip
-        # sweep onto the peg from the side the route asks for, lifting over it if needed
         u_now = _unit(_flat(cable.gripper - c))
         u_peg = _unit(_flat(_vec(peg.position) - c))
         peg_side = _cross_z(u_now, u_peg) * sign  # > 0: the peg lies on the wanted side
@@ -646,36 +878,132 @@ class _Planner:
             start = beside.copy()
             start[2] = z_grip
             moves.append((start, "lower the cable beside the peg, on the route's side"))
-        moves += [(p, "sweep the cable onto the peg") for p in self.arc(c, start, catch, sign)]
-        for point, _ in moves:
-            self.check_reach(cable, point, "catching the peg")
-        for point, why in moves:
-            self.emit(cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True)
-        cable.gripper = catch
+        # the approach up to TOUCH short of the tangent is observed (it pivots
+        # about the last fixed point); the catch, where the bend grows, is not
+        touch = c + _turn(u_in, -sign * TOUCH) * horizontal
+        touch[2] = z_grip
+        to_touch = _swept(_flat(start - c), _flat(touch - c), sign)
+        catch_from = len(moves)
+        if SMALL_TURN < to_touch < math.pi:
+            moves += [
+                (p, "sweep the cable towards the peg") for p in self.arc(c, start, touch, sign)
+            ]
+            catch_from = len(moves)
+            moves.append((catch, "sweep the cable onto the peg"))
+        else:
+            moves += [(p, "sweep the cable onto the peg") for p in self.arc(c, start, catch, sign)]
+        skip = frozenset({peg.name} | ({cable.last} if cable.last else set()))
+        collision = self.path_collision(cable, c, cable.gripper, [p for p, _ in moves], skip)
+        what = "catching the peg"
+        wind: list[FloatArray] = []
         rest = turn - CATCH
-        if rest > SMALL_TURN:
-            radius = float(np.linalg.norm(_flat(catch - _vec(peg.position))))
+        nxt = None if following is None else self.fixtures.get(following.fixture)
+        if nxt is not None and nxt.kind == "clip":
+            # wind until the gripper points short of the clip by short_of(), about the peg
+            axis = _vec(peg.position)
+            aim = _turn(
+                _unit(_flat(_vec(nxt.position) - axis)), -sign * self.short_of(peg, following)
+            )
+            swept = _swept(_flat(catch - axis), aim, sign)
+            if swept > 2.0 * math.pi - math.radians(30.0):  # the catch is past the aim already
+                swept -= 2.0 * math.pi
+            rest = max(swept + 2.0 * math.pi * entry.wind, 0.0)
+        if collision is None and rest > SMALL_TURN:
             centre = _vec(peg.position)
             centre[2] = z_grip
-            start = _flat(catch - centre)
-            for k in range(1, 49):
-                angle = sign * min(rest, 2.0 * math.pi) * k / 48.0
-                self.check_reach(cable, centre + _turn(start, angle), "winding round the peg")
-            turns = (
-                f", {entry.wind} full turn{'s' if entry.wind != 1 else ''}" if entry.wind else ""
-            )
-            self.emit(
+            arm = _flat(catch - centre)
+            n = max(8, math.ceil(rest / math.radians(5.0)))
+            wind = [centre + _turn(arm, sign * rest * k / n) for k in range(1, n + 1)]
+            pivot = _vec(peg.position)
+            pivot[2] = z_pass
+            around = self.overlapping(frozenset({peg.name}))
+            for point in wind:
+                gap = _segment_distance(_flat(point), _flat(c), _flat(_vec(peg.position)))
+                if gap < FINGER_CLEARANCE and z_grip < float(c[2]) + FINGER_CLEARANCE:
+                    collision = Collision(OWN_SPAN, z_grip, float(c[2]) + FINGER_CLEARANCE)
+                    what = "winding round the peg"
+                    break
+                collision = segment_collision(
+                    pivot, point, self.problem.fixtures, cable.spec.radius, around
+                ) or gripper_collision(point, self.problem.fixtures, around)
+                if collision is not None:
+                    what = "winding round the peg"
+                    break
+        return _PegMotion(moves, catch, wind, z_grip, collision, what, catch_from, rest)
+
+    def short_of(self, peg: BoardFixture, following: RouteEntry | None) -> float:
+        """Angle [rad] by which a winding stops short of pointing at the next entry, a clip.
+
+        Pointing at the clip, the cable (or, sliding out, the gripper) would
+        run into it; the move that brings the cable over the clip turns the rest.
+        """
+        nxt = None if following is None else self.fixtures.get(following.fixture)
+        if nxt is None or nxt.kind != "clip":
+            return 0.0
+        d = float(np.linalg.norm(_flat(_vec(nxt.position) - _vec(peg.position))))
+        clear = fixture_reach(nxt) + GRIPPER_CLEARANCE + 0.015
+        return math.asin(min(1.0, clear / max(d, 1e-6)))
+
+    def overlapping(self, names: frozenset[str]) -> frozenset[str]:
+        """``names`` and every fixture whose body overlaps theirs (alternatives on one spot)."""
+        out = set(names)
+        for a in names:
+            fa = self.fixtures.get(a)
+            if fa is None:
+                continue
+            for f in self.problem.fixtures:
+                gap = float(np.linalg.norm(_flat(_vec(f.position) - _vec(fa.position))))
+                if gap < fixture_reach(f) + fixture_reach(fa):
+                    out.add(f.name)
+        return frozenset(out)
+
+    def require_clear(
+        self,
+        cable: _Cable,
+        pivot: FloatArray,
+        start: FloatArray,
+        waypoints: list[FloatArray],
+        what: str,
+        target: str | None = None,
+    ) -> None:
+        """Fail unless the taut cable from ``pivot`` clears the board on the gripper's way.
+
+        The fixture the cable leaves and ``target`` (the one it is aimed at) are not checked.
+        """
+        skip = frozenset(n for n in (cable.last, target) if n is not None)
+        hit = self.path_collision(cable, pivot, start, waypoints, skip)
+        if hit is not None:
+            raise self.fail(
                 cable,
-                "rotate_around_feature_point",
-                f"wind the cable round the peg ({math.degrees(rest):.0f} deg{turns})",
-                arm=cable.arm,
-                angle=sign * rest,
-                axis=[0.0, 0.0, 1.0],
-                about=peg.name,
+                f"{what} takes the {hit.by} into {hit.fixture}: it passes at z = "
+                f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m there "
+                f"(expected the swept cable and the gripper clear of every other fixture)",
             )
-            left = max(radius - rho * rest, MIN_LEAD)
-            cable.gripper = centre + _turn(_unit(start), sign * rest) * left
-        self.advance_peg(cable, peg, entry, following)
+
+    def path_collision(
+        self,
+        cable: _Cable,
+        pivot: FloatArray,
+        start: FloatArray,
+        waypoints: list[FloatArray],
+        skip: frozenset[str],
+    ) -> Collision | None:
+        """The first fixture the taut cable from ``pivot`` (or its gripper) runs into.
+
+        The gripper moves from ``start`` through ``waypoints``, straight between them.
+        """
+        skip = self.overlapping(skip)
+        previous = start
+        for point in waypoints:
+            for k in range(1, 9):
+                g = previous + (point - previous) * (k / 8.0)
+                hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
+                if hit is None:
+                    hit = gripper_collision(g, self.problem.fixtures, skip)
+                if hit is not None:
+                    return hit
+            previous = point
+        return None
 
     def arc(
         self, c: FloatArray, start: FloatArray, end: FloatArray, sign: float
@@ -715,6 +1043,7 @@ class _Planner:
         _, exit_point, _ = self.slot_line(cable, clip)
         cable.s_contact += float(np.linalg.norm(exit_point - cable.contact))
         cable.contact = exit_point
+        cable.last = clip.name
         self.clips_used[clip.name] = cable.spec.name
 
     def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
@@ -795,6 +1124,9 @@ class _Planner:
         waypoints = self.arc(c, cable.gripper, target, self.turn_sign(c, cable.gripper, target))
         for point in waypoints:
             self.check_reach(cable, point, "bringing the cable over the clip")
+        self.require_clear(
+            cable, c, cable.gripper, waypoints, "bringing the cable over the clip", clip.name
+        )
         for point in waypoints:
             self.emit(
                 cable,
@@ -815,6 +1147,7 @@ class _Planner:
         )
         cable.s_contact += to_exit
         cable.contact = exit_point
+        cable.last = clip.name
 
     def closest_press_radius(
         self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float, needed: float
@@ -879,6 +1212,7 @@ class _Planner:
         cable.gripper = far
         cable.s_contact = grasp + 0.5 * SPAN + 0.5 * clip.length
         cable.contact = exit_point
+        cable.last = clip.name
         self.emit(
             cable,
             "single_arm_tension",
@@ -894,7 +1228,7 @@ class _Planner:
         if cable.free >= need:
             return
         distance = need - cable.free
-        if cable.at + distance > cable.spec.length + 1e-9:
+        if cable.at + distance > cable.spec.length - TAIL + 1e-9:
             total = cable.s_contact + need
             raise self.fail(
                 cable,
@@ -902,9 +1236,10 @@ class _Planner:
                 f"(the route so far {cable.s_contact:.3f} m plus {need:.3f} m), it is "
                 f"{cable.spec.length:.3f} m long",
             )
-        distance = min(distance + LEAD - MIN_LEAD, cable.spec.length - cable.at)
+        distance = min(distance + LEAD - MIN_LEAD, cable.spec.length - TAIL - cable.at)
         out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
         self.check_reach(cable, out, "sliding the cable out")
+        self.require_clear(cable, cable.contact, cable.gripper, [out], "sliding the cable out")
         self.emit(
             cable,
             "single_arm_sliding",

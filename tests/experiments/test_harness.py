@@ -1,0 +1,99 @@
+"""The harness experiment: the board campaign's figures, files and the CLI end to end."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+pytest.importorskip("mujoco")
+
+from tautwire.cli.main import main
+from tautwire.experiments.harness import (
+    BOARDS_CSV,
+    BOARDS_JSON,
+    BOARDS_MD,
+    summarise_boards,
+    worst_board,
+)
+
+
+def _record(board: int, **changes: Any) -> dict[str, Any]:
+    record: dict[str, Any] = {
+        "board": board,
+        "seed": board,
+        "redraws": 1,
+        "completed": True,
+        "false_successes": 0,
+        "false_steps": [],
+        "true_max_force": 5.0,
+        "over_force_limit": False,
+        "steps": 20,
+        "failed_step": None,
+        "cause": None,
+        "detail": None,
+        "routes_done": 2,
+        "model_horizontal_mean": 0.002,
+        "model_horizontal_max": 0.004,
+        "model_vertical_mean": 0.001,
+        "model_vertical_max": 0.002,
+        "sim_time": 60.0,
+        "wall_time": 50.0,
+    }
+    record.update(changes)
+    return record
+
+
+def test_the_summary_counts_boards_and_quantiles() -> None:
+    records = [
+        _record(0),
+        _record(1, completed=False, cause="not_clipped", model_horizontal_mean=0.004),
+        _record(2, false_successes=2, model_horizontal_mean=0.006),
+    ]
+    report = summarise_boards(records, seed=0)
+    assert (report["boards"], report["completed"], report["false_successes"]) == (3, 2, 2)
+    assert report["boards_with_false_successes"] == 1 and report["redraws"] == 3
+    assert report["model_error"]["horizontal_mean"]["median"] == pytest.approx(0.004)
+    assert report["causes"] == {"not_clipped": 1}
+    # false successes are worse than a failure, which is worse than a large error
+    assert worst_board(records)["board"] == 2  # type: ignore[index]
+    assert worst_board(records[:2])["board"] == 1  # type: ignore[index]
+
+
+@pytest.mark.slow
+def test_a_two_board_campaign_through_the_cli(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    out = tmp_path / "h"
+    argv = ["reproduce", "harness", "--boards", "2", "--workers", "1", "--seed", "3"]
+    assert main([*argv, "--backend", "serial", "--out", str(out), "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["boards"] == 2 and len(report["board_records"]) == 2
+    for key in ("completed", "false_successes", "over_force_limit", "wall_time"):
+        assert key in report
+    assert report["false_successes"] == sum(r["false_successes"] for r in report["board_records"])
+    for r in report["board_records"]:
+        assert r["completed"] or r["cause"], r  # a failure names its cause
+        # every false success is named, with what the simulator showed
+        assert len(r["false_steps"]) == r["false_successes"], r
+        assert r["over_force_limit"] == (r["true_max_force"] > 15.0)
+    assert set(report["model_error"]) == {
+        "horizontal_mean",
+        "horizontal_max",
+        "vertical_mean",
+        "vertical_max",
+    }
+    for name in (BOARDS_JSON, BOARDS_MD, BOARDS_CSV, "harness_worst_board.png"):
+        assert (out / name).stat().st_size > 0, name
+    assert len((out / BOARDS_CSV).read_text().splitlines()) == 3
+
+
+def test_harness_options_are_checked(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["reproduce", "harness", "--trials", "3"]) != 0
+    assert "not for harness" in capsys.readouterr().err
+    assert main(["reproduce", "harness", "--workers", "2"]) != 0
+    assert "only with --boards" in capsys.readouterr().err
+    assert main(["reproduce", "fig5a", "--boards", "2"]) != 0
+    assert "only for harness" in capsys.readouterr().err

@@ -1,0 +1,43 @@
+"""Every shipped scenario runs to success in the simulator, with every claim true.
+
+The same path as ``tautwire run NAME``: the name resolved to the packaged
+file, loaded, planned from its routes where it has no task, simulated and
+scored against the simulator's truth.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+pytest.importorskip("mujoco")
+
+from tautwire.experiments.run_scenario import run_scenario
+from tautwire.scenario import load_scenario
+from tautwire.scenario.registry import resolve_scenario, scenario_names
+
+#: Shipped scenarios that do not yet run to success, and why (measured).
+NOT_YET = {
+    "harness": "F into C2 after the peg P1: the cable goes down 5-9 mm beside the slot (the "
+    "jaws catch it within about 2.6 mm) on every aim, at the slot and 3 mm to either side; "
+    "the steps before are true and the failure is honest (not_clipped, 0 false successes)",
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "name",
+    [
+        pytest.param(n, marks=pytest.mark.xfail(reason=NOT_YET[n], strict=False))
+        if n in NOT_YET
+        else n
+        for n in scenario_names()
+    ],
+)
+def test_a_shipped_scenario_succeeds_truthfully(name: str) -> None:
+    result, _, _ = run_scenario(load_scenario(resolve_scenario(name)))
+    failed = [(s["primitive"], s["cause"], s.get("detail")) for s in result.steps if s["cause"]]
+    assert result.success, failed
+    assert result.false_successes == 0, [s["truth"] for s in result.steps]
+    for cable in result.cables:
+        if cable["route_done"] is not None:
+            assert cable["route_done"] and cable["route_truth"]["agrees"], cable
