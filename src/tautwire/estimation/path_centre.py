@@ -34,6 +34,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.axis_plane import axis_plane
 
 FloatArray = NDArray[np.float64]
 
@@ -58,17 +59,9 @@ class PathCentre:
     def __init__(
         self, axis: ArrayLike, radius: float, sense: float, stiffness: float | None
     ) -> None:
-        a = np.asarray(axis, dtype=float).reshape(3)
-        n = float(np.linalg.norm(a))
-        if not (n > 0.0 and math.isfinite(n)):
-            raise InvalidArgumentError(f"axis must be a non-zero vector, got {a.tolist()}")
+        self.axis, self._basis = axis_plane(axis)  # plane coordinates: rows of the basis
         if not (radius >= 0.0 and math.isfinite(radius)):
             raise InvalidArgumentError(f"radius must be >= 0 m, got {radius}")
-        self.axis = a / n
-        helper = np.array([1.0, 0.0, 0.0]) if abs(self.axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-        e1 = np.cross(self.axis, helper)
-        e1 /= float(np.linalg.norm(e1))
-        self._basis = np.stack([e1, np.cross(self.axis, e1)])  # (2, 3)
         self.radius = float(radius)
         self.sense = 1.0 if sense >= 0.0 else -1.0
         self.compliance = 1.0 / stiffness if stiffness is not None and stiffness > 0.0 else 0.0

@@ -30,6 +30,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.axis_plane import axis_plane
 
 FloatArray = NDArray[np.float64]
 
@@ -50,19 +51,11 @@ class PegAxisFit:
     """
 
     def __init__(self, axis: ArrayLike, radius: float, radius_std: float) -> None:
-        a = np.asarray(axis, dtype=float).reshape(3)
-        n = float(np.linalg.norm(a))
-        if not (n > 0.0 and math.isfinite(n)):
-            raise InvalidArgumentError(f"axis must be a non-zero vector, got {a.tolist()}")
+        self.axis, self._basis = axis_plane(axis)  # plane coordinates: rows of the basis
         if not (radius >= 0.0 and math.isfinite(radius)):
             raise InvalidArgumentError(f"radius must be >= 0 m, got {radius}")
         if not (radius_std >= 0.0 and math.isfinite(radius_std)):
             raise InvalidArgumentError(f"radius_std must be >= 0 m, got {radius_std}")
-        self.axis = a / n
-        helper = np.array([1.0, 0.0, 0.0]) if abs(self.axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-        e1 = np.cross(self.axis, helper)
-        e1 /= float(np.linalg.norm(e1))
-        self._basis = np.stack([e1, np.cross(self.axis, e1)])  # (2, 3): plane coordinates
         self.radius = float(radius)
         self.radius_std = float(radius_std)
         self._A = np.zeros((2, 2))  # sum w n n'
