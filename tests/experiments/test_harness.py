@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 
-pytest.importorskip("mujoco")
+pytest.importorskip("tautwire.sim")  # sets MUJOCO_GL before MuJoCo is first imported
 
 from tautwire.cli.main import main
 from tautwire.experiments.harness import (

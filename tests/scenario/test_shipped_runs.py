@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-pytest.importorskip("mujoco")
+pytest.importorskip("tautwire.sim")  # sets MUJOCO_GL before MuJoCo is first imported
 
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.scenario import load_scenario
