@@ -35,6 +35,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.estimation.axis_plane import axis_plane
+from tautwire.estimation.effective_samples import effective_samples
 
 FloatArray = NDArray[np.float64]
 
@@ -134,24 +135,10 @@ class PathCentre:
             return None
         n = len(g)
         scatter = float(r @ r) / max(n - 3, 1)
-        cov2 = N_inv[:2, :2] * scatter * (n / _effective_samples(r))
+        cov2 = N_inv[:2, :2] * scatter * (n / effective_samples(r))
         centre: FloatArray = self._basis.T @ x[:2] + self.axis * float(self.axis @ s0)
         covariance: FloatArray = self._basis.T @ cov2 @ self._basis
         return centre, covariance
-
-
-def _effective_samples(r: FloatArray) -> float:
-    """How many independent samples the residuals ``r`` are worth, from their lag-1 correlation.
-
-    Neighbouring samples err together (the tension's swing, the cable's
-    wobble): for an AR(1) sequence of correlation rho, n (1 - rho) / (1 + rho).
-    """
-    n = len(r)
-    rr = float(r @ r)
-    if n < 3 or rr <= 0.0:
-        return 1.0
-    rho = min(max(float(r[1:] @ r[:-1]) / rr, 0.0), 0.999)
-    return max(1.0, n * (1.0 - rho) / (1.0 + rho))
 
 
 def _turns(g: FloatArray, c: FloatArray) -> FloatArray:

@@ -294,6 +294,10 @@ class ModelEstimator:
         #: from F's lines 15 mm off at a reported 1.8 mm). Every primitive
         #: starts with it on (:meth:`Primitive.start`).
         self.observe_contacts = True
+        #: Whether a circling gripper's path is sampled for its centre. A
+        #: primitive that holds still (I's bias check) turns it off: still
+        #: samples are no circle. Every primitive starts with it on.
+        self.sample_path = True
         self._tail = 0.0  # weight [N] of the free tail hanging from the gripper, last seen
         self.round_fixtures = dict(round_fixtures or {})
         #: (axis, sense) of a rotation in progress (primitive I), else None.
@@ -704,7 +708,8 @@ class ModelEstimator:
         tension = max(float(f @ direction), 0.0)
         if taut and self.rotation is not None and self.contact_filter.running:
             self._watch_bias(obs.time, f)  # I swings its tension: a bias shows
-            self._sample_path(obs.time, p_g, tension)
+            if self.sample_path:
+                self._sample_path(obs.time, p_g, tension)
         if c is not None:
             # the cable length to the contact sets the filter's noise scale
             # (never the distance to its own estimate, which can collapse)

@@ -10,10 +10,12 @@ from numpy.typing import ArrayLike
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.model.vector3 import cross3, norm3
+from tautwire.primitives import bias_check
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
+from tautwire.primitives.bias_check import BiasCheck
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.model_estimator import TensionState
-from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.outcome import RUNNING, Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
@@ -26,6 +28,8 @@ from tautwire.robot import Arm, Command, Observation
 #: bias (:mod:`~tautwire.estimation.force_bias_monitor`).
 TENSION_SWING = 0.2
 SWING_FREQUENCY = 1.5
+#: Time [s] the bias check adds to the default timeout.
+CHECK_TIME = 3.0 * bias_check.SETTLE + 2.0 * bias_check.MEASURE
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -46,8 +50,11 @@ class RotateAroundFeaturePoint(Primitive):
     declared the circle continues about the new contact.
 
     Success: the gripper has turned ``angle`` about ``axis`` around the
-    contact, summed period by period about the current estimate (the span
-    from the contact to the gripper turns with it; a jump of the estimate
+    contact and, held still there at two tensions, the force sensor shows no
+    bias that moves the contact estimate beyond 3 mm, or half a peg's
+    tolerance (:mod:`~tautwire.primitives.bias_check`; else ``sensor_bias``). The turn
+    is summed period by period about the current estimate (the span from
+    the contact to the gripper turns with it; a jump of the estimate
     adds no turn, and no force-sensing fault enters the count: counted on
     the measured pull's direction, a low-pass lag fell 8 deg short of the
     true 222 deg in robustness trial 67). Failure:
@@ -66,7 +73,7 @@ class RotateAroundFeaturePoint(Primitive):
         slack_time: Longest time [s] the cable may be slack.
         timeout: Longest run time [s]; default three times the nominal time
             (at ``speed``, or slower where the speed limit on the circle's
-            radius asks for it) plus 5 s.
+            radius asks for it) plus 5 s and the bias check's time.
     """
 
     name = "rotate_around_feature_point"
@@ -94,7 +101,9 @@ class RotateAroundFeaturePoint(Primitive):
             raise InvalidArgumentError(f"axis must be a non-zero 3-vector, got {axis!r}")
         if force is not None and not (force > 0.0 and math.isfinite(force)):
             raise InvalidArgumentError(f"force must be > 0 N, got {force}")
-        super().__init__(timeout if timeout is not None else 3.0 * abs(angle) / speed + 5.0)
+        super().__init__(
+            timeout if timeout is not None else 3.0 * abs(angle) / speed + 5.0 + CHECK_TIME
+        )
         self._default_timeout = timeout is None
         self.arm: Arm = arm
         self.angle = float(angle)
@@ -108,6 +117,8 @@ class RotateAroundFeaturePoint(Primitive):
         self._bend = 0.0  # the span's angle [rad] off the gripper's about a peg, last period
         self._slack = SlackWatch(self.slack_time)
         self._ever_taut = False
+        self._check: BiasCheck | None = None  # the bias check, once the turn is done
+        self._hold = np.zeros(3)  # where the gripper holds still for it [m]
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Remember the start; reset the success criteria."""
@@ -119,6 +130,7 @@ class RotateAroundFeaturePoint(Primitive):
         self._previous = None
         self._slack.reset()
         self._ever_taut = False
+        self._check = None
         self._axis = ToolAxis()
         self._travel = TravelBound(ctx.limits.max_force)
         if self._default_timeout:
@@ -127,7 +139,7 @@ class RotateAroundFeaturePoint(Primitive):
             p_gripper = obs.gripper(self.arm).position
             radius = self._radius(p_gripper, p_gripper if contact is None else contact)
             speed = min(self.speed, self._speed_limit(ctx) / max(radius, 1e-3))
-            self.timeout = 3.0 * abs(self.angle) / speed + 5.0
+            self.timeout = 3.0 * abs(self.angle) / speed + 5.0 + CHECK_TIME
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -138,6 +150,8 @@ class RotateAroundFeaturePoint(Primitive):
         # step about the current estimate, so a jump of the estimate adds no
         # turn; force-sensing faults (a spike, a weak or askew pull) do not
         # enter it, and an estimate e off at radius r errs by about e / r
+        if self._check is not None:
+            return self._checking(obs, ctx, state)
         radius = self._radius(me.position, state.contact)
         self._track_angle(me.position, state.contact, ctx.estimator.round_contact())
         # set point ahead on the circle: P control with gain k_p then moves
@@ -157,6 +171,50 @@ class RotateAroundFeaturePoint(Primitive):
         twist = tension_twist(ctx, obs, self.arm, desired, self.force * swing, state)
         self._judge(obs, state.tension, state.taut)
         self._check_travel(ctx, state)
+        if self.outcome.status == "success":  # turned: check the sensor before saying so
+            round_contact = ctx.estimator.round_contact()
+            peg = None
+            if round_contact is not None and round_contact[2] > 0.0:
+                peg = (round_contact[0], round_contact[2])
+            self._check = BiasCheck(
+                obs.time,
+                self.force,
+                ctx.estimator.elasticity.k_trusted,
+                max(state.span, 1e-3),
+                peg,
+            )
+            self._turn_detail = self.outcome.detail
+            self.outcome = RUNNING
+            self._hold = me.position.copy()
+            ctx.estimator.sample_path = False  # a still gripper draws no circle
+        return Command(twist)
+
+    def _checking(self, obs: Observation, ctx: PrimitiveContext, state: TensionState) -> Command:
+        """Hold still at the bias check's tension set point; judge once it is over."""
+        assert self._check is not None and self.force is not None
+        me = obs.gripper(self.arm)
+        q_target = (
+            self._axis.target(me.orientation, state.direction) if state.taut else me.orientation
+        )
+        desired = with_pose(current_pose(obs), self.arm, Pose(self._hold, q_target))
+        twist = tension_twist(ctx, obs, self.arm, desired, self._check.set_point(obs.time), state)
+        if state.taut:
+            self._check.add(obs.time, state.force)
+        self._ever_taut |= state.taut
+        if self._slack.update(obs.time, state.tension, self.force):
+            self.outcome = Outcome.failure(
+                "slipped", f"the cable went slack ({state.tension:.2f} N) in the bias check"
+            )
+        self._check_travel(ctx, state)
+        if not self.outcome.done and self._check.done(obs.time):
+            ok, detail, _ = self._check.verdict()
+            ctx.estimator.sample_path = True
+            if ok:
+                self.outcome = Outcome.success(f"{self._turn_detail}; {detail}")
+            else:
+                self.outcome = Outcome.failure(
+                    "sensor_bias", f"{detail}: a drifting force-torque sensor bias"
+                )
         return Command(twist)
 
     def _check_travel(self, ctx: PrimitiveContext, state: TensionState) -> None:

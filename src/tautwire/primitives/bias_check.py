@@ -1,0 +1,146 @@
+"""The end of a rotation (primitive I): hold still, step the tension, judge the sensor's bias.
+
+A force-sensor bias normal to the cable tilts every line the contact filter
+sees by b_n / T, which moves a circled contact's estimate by L b_n / T as a
+whole: the lines stay consistent, the covariance small. Around a peg
+nothing else catches it (the gripper's own path is no check there: the
+wound length, the sag and the peg's friction move its centre by 2-18 mm).
+So before I reports success, the gripper holds still, first at the set
+point and then at a lower tension, and the two mean pulls give the bias
+normal to the cable (:mod:`~tautwire.estimation.tension_step`). The shift
+it makes must be within :data:`SHIFT_LIMIT` (a point contact), or half a
+peg's tolerance, its radius plus 3 mm, normal to its axis (where along the
+axis the cable bears is not the estimate's, and the weight compensation
+leaves 0.05 N along it on clean pegs: robustness trials 1 and 2 read
+8 mm); else the step fails with ``sensor_bias``.
+
+The lower level is half the set point, or less of a step where the
+stroke (the gripper's travel towards the contact, the step over the
+stiffness) would exceed :data:`STROKE_SHARE` of the span or
+:data:`MAX_STROKE`. Each level settles for :data:`SETTLE` s and is then
+measured for :data:`MEASURE` s; the set point ramps down and back up
+over a settle each, so the check takes 3 SETTLE + 2 MEASURE.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.estimation.tension_step import TensionStep, contact_shift
+
+FloatArray = NDArray[np.float64]
+
+#: Time [s] each tension level settles (the set point ramps over it).
+SETTLE = 0.5
+#: Time [s] each level is measured.
+MEASURE = 1.0
+#: The lower level, a fraction of the set point (before the stroke limits).
+LOWER = 0.5
+#: Longest stroke [m] towards the contact, and at most this share of the span.
+MAX_STROKE = 0.08
+STROKE_SHARE = 0.3
+#: Largest shift [m] of the contact estimate a bias may make for the check to pass.
+SHIFT_LIMIT = 0.003
+#: A peg's tolerance beyond its radius [m] (the shift limit is half the sum).
+PEG_TOLERANCE = 0.003
+#: The shift must also exceed this many of its stds to fail the check.
+SIGMAS = 3.0
+
+
+class BiasCheck:
+    """One hold-and-step check of the force sensor's bias.
+
+    Args:
+        start: Time [s] the check starts.
+        force: Tension set point [N] (the upper level).
+        stiffness: Trusted stiffness [N/m] of the span.
+        span: Distance [m] from the gripper to the contact (the lever).
+        peg: A peg's (axis (3,), radius [m]) when the contact is round, else None.
+    """
+
+    def __init__(
+        self,
+        start: float,
+        force: float,
+        stiffness: float,
+        span: float,
+        peg: tuple[ArrayLike, float] | None = None,
+    ) -> None:
+        for name, value in (("force", force), ("stiffness", stiffness), ("span", span)):
+            if not (value > 0.0 and math.isfinite(value)):
+                raise InvalidArgumentError(f"{name} must be > 0, got {value}")
+        self.start = float(start)
+        self.force = float(force)
+        self.span = float(span)
+        stroke = min(MAX_STROKE, STROKE_SHARE * span)
+        self.lower = self.force - min((1.0 - LOWER) * self.force, stiffness * stroke)
+        self._step = TensionStep()
+        self.limit = SHIFT_LIMIT
+        self._axis: FloatArray | None = None
+        if peg is not None:
+            a = np.asarray(peg[0], dtype=float).reshape(3)
+            self._axis = a / float(np.linalg.norm(a))
+            self.limit = max(SHIFT_LIMIT, 0.5 * (float(peg[1]) + PEG_TOLERANCE))
+
+    @property
+    def duration(self) -> float:
+        """Length [s] of the whole check."""
+        return 3.0 * SETTLE + 2.0 * MEASURE
+
+    def done(self, time: float) -> bool:
+        """Whether the check is over at ``time`` [s]."""
+        return time - self.start >= self.duration
+
+    def set_point(self, time: float) -> float:
+        """The tension set point [N] at ``time`` [s]."""
+        t = time - self.start
+        drop = self.force - self.lower
+        if t < SETTLE + MEASURE:
+            return self.force
+        t -= SETTLE + MEASURE
+        if t < SETTLE:
+            return self.force - drop * t / SETTLE
+        t -= SETTLE
+        if t < MEASURE:
+            return self.lower
+        t -= MEASURE
+        return self.lower + drop * min(t / SETTLE, 1.0)
+
+    def add(self, time: float, force: ArrayLike) -> None:
+        """Add the weight-compensated pull [N] (world frame) at ``time`` [s] if it is measured."""
+        t = time - self.start
+        if SETTLE <= t < SETTLE + MEASURE:
+            self._step.add(0, force)
+        elif 2.0 * SETTLE + MEASURE <= t < 2.0 * SETTLE + 2.0 * MEASURE:
+            self._step.add(1, force)
+
+    def verdict(self) -> tuple[bool, str, FloatArray | None]:
+        """Whether the bias leaves the contact within ``limit`` [m], why, and the shift [m].
+
+        An inconclusive check (too few samples, no step) passes with its reason.
+        """
+        result = self._step.result()
+        if result is None:
+            return True, "the tension step was not measured", None
+        t1 = max(result.tensions[0], 1e-9)
+        shift, cov = contact_shift(result, self.span, t1)
+        if self._axis is not None:  # normal to the peg's axis
+            keep = np.eye(3) - np.outer(self._axis, self._axis)
+            shift, cov = keep @ shift, keep @ cov @ keep
+        size = float(np.linalg.norm(shift))
+        along = shift / size if size > 0.0 else np.zeros(3)
+        std = math.sqrt(max(float(along @ cov @ along), 0.0))
+        bias = float(np.linalg.norm(result.bias))
+        detail = (
+            f"held still at {result.tensions[0]:.2f} N and {result.tensions[1]:.2f} N, the pull"
+            f" shows a {bias:.3f} N force bias normal to the cable, which moves the contact"
+            f" estimate {1e3 * size:.1f} mm (std {1e3 * std:.1f} mm)"
+        )
+        if self._axis is not None:
+            detail += " normal to the peg's axis"
+        ok = not (size > self.limit and size > SIGMAS * std)
+        return ok, detail, shift

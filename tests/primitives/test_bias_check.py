@@ -1,0 +1,109 @@
+"""I's closing check of the force sensor's bias (primitives/bias_check.py)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from tautwire.errors import InvalidArgumentError
+from tautwire.primitives import RotateAroundFeaturePoint, SingleArmTension
+from tautwire.primitives.bias_check import (
+    LOWER,
+    MAX_STROKE,
+    MEASURE,
+    SETTLE,
+    SHIFT_LIMIT,
+    BiasCheck,
+)
+from tautwire.robot import Observation, Wrench
+from tautwire.tasks import run_step
+from tests.primitives.conftest import CONTACT, GRIPPER, context
+from tests.primitives.spring_robot import SpringCableRobot
+
+
+def test_schedule_steps_down_and_back() -> None:
+    check = BiasCheck(10.0, 3.0, 1000.0, 0.5)
+    assert check.lower == pytest.approx(LOWER * 3.0)
+    assert check.duration == pytest.approx(3 * SETTLE + 2 * MEASURE)
+    assert check.set_point(10.0) == 3.0
+    assert check.set_point(10.0 + SETTLE + MEASURE + 0.5 * SETTLE) == pytest.approx(2.25)
+    assert check.set_point(10.0 + 2 * SETTLE + MEASURE + 0.1) == pytest.approx(1.5)
+    assert check.set_point(10.0 + check.duration) == pytest.approx(3.0)
+    assert not check.done(10.0 + check.duration - 1e-3) and check.done(10.0 + check.duration)
+
+
+def test_a_soft_or_short_span_steps_by_its_stroke() -> None:
+    # 10 N/m over 0.5 m: a half step (1.5 N) would pull 150 mm; MAX_STROKE caps it
+    assert BiasCheck(0.0, 3.0, 10.0, 0.5).lower == pytest.approx(3.0 - 10.0 * MAX_STROKE)
+    # a 0.1 m span: at most 30 mm of it
+    assert BiasCheck(0.0, 3.0, 10.0, 0.1).lower == pytest.approx(3.0 - 10.0 * 0.03)
+
+
+def test_bad_arguments_are_refused() -> None:
+    with pytest.raises(InvalidArgumentError, match="stiffness"):
+        BiasCheck(0.0, 3.0, 0.0, 0.5)
+    with pytest.raises(InvalidArgumentError, match="span"):
+        BiasCheck(0.0, 3.0, 100.0, math.nan)
+
+
+def _fed(bias: np.ndarray, span: float = 0.4, seed: int = 0) -> BiasCheck:
+    """A check fed T u + b + noise at its own set points, every 4 ms."""
+    rng = np.random.default_rng(seed)
+    u = np.array([0.8, -0.6, 0.0])
+    check = BiasCheck(0.0, 2.0, 300.0, span)
+    t = 0.0
+    while not check.done(t):
+        check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.08, size=3))
+        t += 0.004
+    return check
+
+
+def test_no_bias_passes_and_a_bias_fails() -> None:
+    ok, detail, shift = _fed(np.zeros(3)).verdict()
+    assert ok and shift is not None and np.linalg.norm(shift) < 3 * SHIFT_LIMIT
+    assert "held still" in detail
+    # 0.1 N normal to the cable at 2 N, 0.4 m from the contact: 20 mm
+    ok, detail, shift = _fed(np.array([0.06, 0.08, 0.0])).verdict()
+    assert not ok and shift is not None
+    assert np.linalg.norm(shift) == pytest.approx(0.02, abs=0.004)
+    assert "20." in detail or "19." in detail or "21." in detail
+
+
+def test_an_unmeasured_check_passes_and_says_so() -> None:
+    ok, detail, shift = BiasCheck(0.0, 2.0, 300.0, 0.4).verdict()
+    assert ok and shift is None and "not measured" in detail
+
+
+class _LateBiasRobot(SpringCableRobot):
+    """A spring cable whose sensor gains a bias once I's check has begun."""
+
+    def __init__(self, bias: np.ndarray) -> None:
+        super().__init__(CONTACT, GRIPPER, 200.0, seed=21)
+        self.bias = bias
+        self.primitive: RotateAroundFeaturePoint | None = None
+
+    def observe(self) -> Observation:
+        obs = super().observe()
+        w = obs.wrenches[0]
+        on = self.primitive is not None and self.primitive._check is not None
+        f = w.force + (self.bias if on else 0.0)
+        return Observation(obs.time, obs.left, obs.right, (Wrench("left", f, w.torque),))
+
+
+@pytest.mark.parametrize("bias", [np.zeros(3), np.array([0.0, 0.0, 0.4])])
+def test_rotation_ends_with_the_check(bias: np.ndarray) -> None:
+    """The lines before the check are clean: only the check can tell a bias."""
+    robot = _LateBiasRobot(bias)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    rotate = RotateAroundFeaturePoint("left", math.pi, speed=0.5)
+    robot.primitive = rotate
+    report = run_step(robot, rotate, ctx)
+    if np.any(bias):
+        # 0.4 N normal to the cable at 3 N, 0.3 m from the contact: 40 mm
+        assert not report.success and report.cause == "sensor_bias", report
+        assert "held still" in report.detail
+    else:
+        assert report.success, report
+        assert "held still" in report.detail
+    assert ctx.estimator.sample_path
