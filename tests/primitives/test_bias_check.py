@@ -107,3 +107,28 @@ def test_rotation_ends_with_the_check(bias: np.ndarray) -> None:
         assert report.success, report
         assert "held still" in report.detail
     assert ctx.estimator.sample_path
+
+
+def _fed_peg(bias: np.ndarray, radius: float = 0.006) -> BiasCheck:
+    rng = np.random.default_rng(3)
+    u = np.array([0.8, -0.6, 0.0])
+    check = BiasCheck(0.0, 2.0, 300.0, 0.4, peg=(np.array([0.0, 0.0, 1.0]), radius))
+    t = 0.0
+    while not check.done(t):
+        check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.03, size=3))
+        t += 0.004
+    return check
+
+
+def test_a_pegs_shift_is_judged_normal_to_and_along_its_axis() -> None:
+    check = _fed_peg(np.zeros(3))
+    assert check.limit == pytest.approx(0.0045) and check.axial_limit == pytest.approx(0.009)
+    # 0.03 N up at 2 N over 0.4 m: 6 mm along the axis, within its 9 mm
+    ok, detail, _ = _fed_peg(np.array([0.0, 0.0, 0.03])).verdict()
+    assert ok and "along the peg's axis" in detail
+    # 0.06 N up: 12 mm, beyond it
+    ok, _, _ = _fed_peg(np.array([0.0, 0.0, 0.06])).verdict()
+    assert not ok
+    # 0.03 N sideways: 6 mm normal to the axis, beyond half the tolerance
+    ok, detail, _ = _fed_peg(np.array([0.018, 0.024, 0.0])).verdict()
+    assert not ok and "normal to the peg's axis" in detail

@@ -8,11 +8,13 @@ wound length, the sag and the peg's friction move its centre by 2-18 mm).
 So before I reports success, the gripper holds still, first at the set
 point and then at a lower tension, and the two mean pulls give the bias
 normal to the cable (:mod:`~tautwire.estimation.tension_step`). The shift
-it makes must be within :data:`SHIFT_LIMIT` (a point contact), or half a
-peg's tolerance, its radius plus 3 mm, normal to its axis (where along the
-axis the cable bears is not the estimate's, and the weight compensation
-leaves 0.05 N along it on clean pegs: robustness trials 1 and 2 read
-8 mm); else the step fails with ``sensor_bias``.
+it makes must be within :data:`SHIFT_LIMIT` for a point contact; for a peg
+within half its tolerance (its radius plus 3 mm) normal to its axis, and
+within the whole tolerance along it: there the cable's bearing height
+changes with the tension (clean robustness trials 1 and 2 read 8 mm, the
+other 38 clean runs measured within 4 mm), and a vertical bias of 0.28 N
+lifted trial 9's peg estimate 40 mm. Else the step fails with
+``sensor_bias``.
 
 The lower level is half the set point, or less of a step where the
 stroke (the gripper's travel towards the contact, the step over the
@@ -79,12 +81,16 @@ class BiasCheck:
         stroke = min(MAX_STROKE, STROKE_SHARE * span)
         self.lower = self.force - min((1.0 - LOWER) * self.force, stiffness * stroke)
         self._step = TensionStep()
+        #: Largest shift [m] (a peg's: normal to its axis) that passes.
         self.limit = SHIFT_LIMIT
+        #: Largest shift [m] along a peg's axis that passes (a peg only).
+        self.axial_limit = math.inf
         self._axis: FloatArray | None = None
         if peg is not None:
             a = np.asarray(peg[0], dtype=float).reshape(3)
             self._axis = a / float(np.linalg.norm(a))
             self.limit = max(SHIFT_LIMIT, 0.5 * (float(peg[1]) + PEG_TOLERANCE))
+            self.axial_limit = float(peg[1]) + PEG_TOLERANCE
 
     @property
     def duration(self) -> float:
@@ -119,28 +125,38 @@ class BiasCheck:
             self._step.add(1, force)
 
     def verdict(self) -> tuple[bool, str, FloatArray | None]:
-        """Whether the bias leaves the contact within ``limit`` [m], why, and the shift [m].
+        """Whether the bias leaves the contact within its limits, why, and the shift [m].
 
-        An inconclusive check (too few samples, no step) passes with its reason.
+        A point contact's shift is judged whole against ``limit``; a peg's
+        part normal to its axis against ``limit`` and its part along the
+        axis against ``axial_limit``. A part fails when it exceeds its limit
+        and :data:`SIGMAS` of its std. An inconclusive check (too few
+        samples, no step) passes with its reason.
         """
         result = self._step.result()
         if result is None:
             return True, "the tension step was not measured", None
-        t1 = max(result.tensions[0], 1e-9)
-        shift, cov = contact_shift(result, self.span, t1)
-        if self._axis is not None:  # normal to the peg's axis
-            keep = np.eye(3) - np.outer(self._axis, self._axis)
-            shift, cov = keep @ shift, keep @ cov @ keep
-        size = float(np.linalg.norm(shift))
-        along = shift / size if size > 0.0 else np.zeros(3)
-        std = math.sqrt(max(float(along @ cov @ along), 0.0))
+        shift, cov = contact_shift(result, self.span, max(result.tensions[0], 1e-9))
+        parts: list[tuple[str, FloatArray, float]] = [("", np.eye(3), self.limit)]
+        if self._axis is not None:
+            along = np.outer(self._axis, self._axis)
+            parts = [
+                (" normal to the peg's axis", np.eye(3) - along, self.limit),
+                (" along the peg's axis", along, self.axial_limit),
+            ]
+        ok = True
+        moves = []
+        for name, keep, limit in parts:
+            part = keep @ shift
+            size = float(np.linalg.norm(part))
+            unit = part / size if size > 0.0 else np.zeros(3)
+            std = math.sqrt(max(float(unit @ cov @ unit), 0.0))
+            ok &= not (size > limit and size > SIGMAS * std)
+            moves.append(f"{1e3 * size:.1f} mm (std {1e3 * std:.1f} mm){name}")
         bias = float(np.linalg.norm(result.bias))
         detail = (
             f"held still at {result.tensions[0]:.2f} N and {result.tensions[1]:.2f} N, the pull"
             f" shows a {bias:.3f} N force bias normal to the cable, which moves the contact"
-            f" estimate {1e3 * size:.1f} mm (std {1e3 * std:.1f} mm)"
+            f" estimate {' and '.join(moves)}"
         )
-        if self._axis is not None:
-            detail += " normal to the peg's axis"
-        ok = not (size > self.limit and size > SIGMAS * std)
         return ok, detail, shift
