@@ -29,7 +29,10 @@ def test_schedule_steps_down_and_back() -> None:
     assert check.set_point(10.0 + SETTLE + MEASURE + 0.5 * SETTLE) == pytest.approx(2.25)
     assert check.set_point(10.0 + 2 * SETTLE + MEASURE + 0.1) == pytest.approx(1.5)
     assert check.set_point(10.0 + check.duration) == pytest.approx(3.0)
-    assert not check.done(10.0 + check.duration - 1e-3) and check.done(10.0 + check.duration)
+    end = 10.0 + check.duration
+    assert not check.done(end - 1e-3, 3.0) and check.done(end, 3.0)
+    # not before the tension is back, but a settle later in any case
+    assert not check.done(end, 2.0) and check.done(end + SETTLE, 2.0)
 
 
 def test_a_soft_or_short_span_steps_by_its_stroke() -> None:
@@ -52,7 +55,7 @@ def _fed(bias: np.ndarray, span: float = 0.4, seed: int = 0) -> BiasCheck:
     u = np.array([0.8, -0.6, 0.0])
     check = BiasCheck(0.0, 2.0, 300.0, span)
     t = 0.0
-    while not check.done(t):
+    while not check.done(t, check.set_point(t)):
         check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.08, size=3))
         t += 0.004
     return check
@@ -106,7 +109,7 @@ def test_rotation_ends_with_the_check(bias: np.ndarray) -> None:
     else:
         assert report.success, report
         assert "held still" in report.detail
-    assert ctx.estimator.sample_path
+    assert ctx.estimator.circling
 
 
 def _fed_peg(bias: np.ndarray, radius: float = 0.006) -> BiasCheck:
@@ -114,7 +117,7 @@ def _fed_peg(bias: np.ndarray, radius: float = 0.006) -> BiasCheck:
     u = np.array([0.8, -0.6, 0.0])
     check = BiasCheck(0.0, 2.0, 300.0, 0.4, peg=(np.array([0.0, 0.0, 1.0]), radius))
     t = 0.0
-    while not check.done(t):
+    while not check.done(t, check.set_point(t)):
         check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.03, size=3))
         t += 0.004
     return check

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from tautwire.primitives import RotateAroundFeaturePoint, SingleArmTension
-from tautwire.tasks import run_step
+from tautwire.tasks import TickRecord, run_step
 from tests.primitives.conftest import CONTACT, GRIPPER, context
 from tests.primitives.spring_robot import SpringCableRobot
 
@@ -78,18 +78,30 @@ def test_the_turn_counted_is_the_grippers_about_the_contact() -> None:
     # the span from a point contact turns as the gripper does: at success the
     # gripper's own angle about the true contact is the angle asked, to what
     # the estimate's error e at the radius r can do (about e / r) and a period
+    # (judged when the turn is done, before I's bias check holds still)
     robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=7)
     ctx = tensioned(robot)
     a0 = robot.p[:2] - CONTACT[:2]
-    report = run_step(robot, RotateAroundFeaturePoint("left", 1.2, speed=0.5), ctx)
-    assert report.success
-    a1 = robot.p[:2] - CONTACT[:2]
+    rotate = RotateAroundFeaturePoint("left", 1.2, speed=0.5)
+    done: list[tuple[np.ndarray, np.ndarray]] = []
+
+    def on_tick(record: TickRecord) -> None:
+        if rotate._check is not None and not done:
+            estimate = ctx.estimator.contact_position()
+            assert estimate is not None
+            done.append((robot.p.copy(), estimate))
+
+    report = run_step(robot, rotate, ctx, on_tick=on_tick)
+    assert report.success and done
+    p, estimate = done[0]
+    a1 = p[:2] - CONTACT[:2]
     true_turn = math.atan2(a0[0] * a1[1] - a0[1] * a1[0], float(a0 @ a1))
-    estimate = ctx.estimator.contact_position()
-    assert estimate is not None
     e = float(np.linalg.norm(estimate[:2] - CONTACT[:2]))
     r = float(np.linalg.norm(a1))
     assert abs(true_turn - 1.2) < 1.5 * e / r + math.radians(0.5)
+    # holding still for the check turns the gripper no further
+    a2 = robot.p[:2] - CONTACT[:2]
+    assert abs(math.atan2(a1[0] * a2[1] - a1[1] * a2[0], float(a1 @ a2))) < math.radians(0.5)
 
 
 @pytest.mark.parametrize("sense", [1.0, -1.0])

@@ -21,7 +21,8 @@ stroke (the gripper's travel towards the contact, the step over the
 stiffness) would exceed :data:`STROKE_SHARE` of the span or
 :data:`MAX_STROKE`. Each level settles for :data:`SETTLE` s and is then
 measured for :data:`MEASURE` s; the set point ramps down and back up
-over a settle each, so the check takes 3 SETTLE + 2 MEASURE.
+over a settle each, so the check takes 3 SETTLE + 2 MEASURE, and up to a
+settle more until the tension is back at the set point.
 """
 
 from __future__ import annotations
@@ -40,6 +41,8 @@ FloatArray = NDArray[np.float64]
 SETTLE = 0.5
 #: Time [s] each level is measured.
 MEASURE = 1.0
+#: How near [fraction] the set point the tension must be again for the check to end.
+RECOVERED = 0.1
 #: The lower level, a fraction of the set point (before the stroke limits).
 LOWER = 0.5
 #: Longest stroke [m] towards the contact, and at most this share of the span.
@@ -97,9 +100,17 @@ class BiasCheck:
         """Length [s] of the whole check."""
         return 3.0 * SETTLE + 2.0 * MEASURE
 
-    def done(self, time: float) -> bool:
-        """Whether the check is over at ``time`` [s]."""
-        return time - self.start >= self.duration
+    def done(self, time: float, tension: float) -> bool:
+        """Whether the check is over at ``time`` [s] with the pull ``tension`` [N].
+
+        Over once the set point is back up and the tension within
+        :data:`RECOVERED` of it (the next primitive starts from the set
+        point), or a further settle later in any case.
+        """
+        t = time - self.start
+        if t < self.duration:
+            return False
+        return abs(tension - self.force) <= RECOVERED * self.force or t >= self.duration + SETTLE
 
     def set_point(self, time: float) -> float:
         """The tension set point [N] at ``time`` [s]."""

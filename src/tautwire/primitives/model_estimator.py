@@ -294,14 +294,17 @@ class ModelEstimator:
         #: from F's lines 15 mm off at a reported 1.8 mm). Every primitive
         #: starts with it on (:meth:`Primitive.start`).
         self.observe_contacts = True
-        #: Whether a circling gripper's path is sampled for its centre. A
-        #: primitive that holds still (I's bias check) turns it off: still
-        #: samples are no circle. Every primitive starts with it on.
-        self.sample_path = True
+        #: Whether the gripper circles while a rotation is set: its path is
+        #: then sampled for its centre and its swinging pull watched for a
+        #: bias. I's bias check, which holds still, turns it off: still
+        #: samples draw no circle, and a monitor's window that runs from the
+        #: circle into the hold read a 0.3 N bias on an ideal spring. Every
+        #: primitive starts with it on.
+        self.circling = True
         self._tail = 0.0  # weight [N] of the free tail hanging from the gripper, last seen
         self.round_fixtures = dict(round_fixtures or {})
-        #: (axis, sense) of a rotation in progress (primitive I), else None.
-        self.rotation: tuple[FloatArray, float] | None = None
+        self._rotation: tuple[FloatArray, float] | None = None
+        self._rotations = 0  # how many rotations were set (a new path for each)
         self.iterations = 0  # contact filter iterations so far
         self.changes: list[int] = []  # iterations at which a new contact was declared
         self._sum_p = np.zeros(3)
@@ -318,7 +321,7 @@ class ModelEstimator:
         #: about a point contact, the (point, rotation) it is for, the time of
         #: its last sample, and its estimate as of a sample count.
         self._path: PathCentre | None = None
-        self._path_for: tuple[int, int] | None = None
+        self._path_for: tuple[FeaturePoint, int] | None = None
         self._path_time: float | None = None
         self._path_estimate: tuple[FloatArray, FloatArray] | None = None
         self._path_count = 0
@@ -372,6 +375,20 @@ class ModelEstimator:
             if points[i].is_constrained:
                 return i
         return None
+
+    @property
+    def rotation(self) -> tuple[FloatArray, float] | None:
+        """(axis, sense) of a rotation in progress (primitive I), else None.
+
+        Each rotation set is a new one: the gripper's path about a point is
+        sampled afresh (:class:`~tautwire.estimation.path_centre.PathCentre`).
+        """
+        return self._rotation
+
+    @rotation.setter
+    def rotation(self, value: tuple[FloatArray, float] | None) -> None:
+        self._rotation = value
+        self._rotations += 1
 
     def contact_position(self) -> FloatArray | None:
         """Best knowledge of the contact position [m].
@@ -487,11 +504,15 @@ class ModelEstimator:
             return
         if self._pending is not None:
             return  # a contact change under test: whose centre it circles is open
-        key = (id(point), id(self.rotation))
-        if self._path is None or self._path_for != key:
+        if (
+            self._path is None
+            or self._path_for is None
+            or self._path_for[0] is not point
+            or self._path_for[1] != self._rotations
+        ):
             k = self.elasticity.k_trusted
             self._path = PathCentre(self.rotation[0], 0.0, self.rotation[1], k)
-            self._path_for = key
+            self._path_for = (point, self._rotations)
             self._path_axis = self.rotation[0] / norm3(self.rotation[0])
             self._path_time = None
             self._path_estimate = None
@@ -706,10 +727,9 @@ class ModelEstimator:
         else:
             direction = np.array([0.0, 0.0, -1.0])
         tension = max(float(f @ direction), 0.0)
-        if taut and self.rotation is not None and self.contact_filter.running:
+        if taut and self.rotation is not None and self.contact_filter.running and self.circling:
             self._watch_bias(obs.time, f)  # I swings its tension: a bias shows
-            if self.sample_path:
-                self._sample_path(obs.time, p_g, tension)
+            self._sample_path(obs.time, p_g, tension)
         if c is not None:
             # the cable length to the contact sets the filter's noise scale
             # (never the distance to its own estimate, which can collapse)

@@ -41,7 +41,7 @@ class Primitive(ABC):
         self.elapsed = 0.0
         self.outcome = RUNNING
         ctx.estimator.observe_contacts = True  # a primitive may turn it off in on_start
-        ctx.estimator.sample_path = True
+        ctx.estimator.circling = True
         self.on_start(obs, ctx)
 
     def step(self, obs: Observation) -> Command:
