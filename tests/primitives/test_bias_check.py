@@ -33,6 +33,9 @@ def test_schedule_steps_down_and_back() -> None:
     assert not check.done(end - 1e-3, 3.0) and check.done(end, 3.0)
     # not before the tension is back, but a settle later in any case
     assert not check.done(end, 2.0) and check.done(end + SETTLE, 2.0)
+    # a peg's check always waits that settle (its filter follows the height again)
+    assert not check.done(end, 3.0, settle=True) and check.done(end + SETTLE, 3.0, settle=True)
+    assert not check.restoring(end - SETTLE - 1e-3) and check.restoring(end - SETTLE)
 
 
 def test_a_soft_or_short_span_steps_by_its_stroke() -> None:

@@ -100,17 +100,24 @@ class BiasCheck:
         """Length [s] of the whole check."""
         return 3.0 * SETTLE + 2.0 * MEASURE
 
-    def done(self, time: float, tension: float) -> bool:
+    def restoring(self, time: float) -> bool:
+        """Whether the set point is on its way back up, or back, at ``time`` [s]."""
+        return time - self.start >= 2.0 * SETTLE + 2.0 * MEASURE
+
+    def done(self, time: float, tension: float, settle: bool = False) -> bool:
         """Whether the check is over at ``time`` [s] with the pull ``tension`` [N].
 
         Over once the set point is back up and the tension within
         :data:`RECOVERED` of it (the next primitive starts from the set
-        point), or a further settle later in any case.
+        point), or a further settle later in any case; with ``settle``
+        always that settle later (a peg's filter follows the height again).
         """
         t = time - self.start
         if t < self.duration:
             return False
-        return abs(tension - self.force) <= RECOVERED * self.force or t >= self.duration + SETTLE
+        if t >= self.duration + SETTLE:
+            return True
+        return not settle and abs(tension - self.force) <= RECOVERED * self.force
 
     def set_point(self, time: float) -> float:
         """The tension set point [N] at ``time`` [s]."""

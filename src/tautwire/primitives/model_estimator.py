@@ -295,8 +295,9 @@ class ModelEstimator:
         #: starts with it on (:meth:`Primitive.start`).
         self.observe_contacts = True
         #: Whether the gripper circles while a rotation is set: its path is
-        #: then sampled for its centre and its swinging pull watched for a
-        #: bias. I's bias check, which holds still, turns it off: still
+        #: then sampled for its centre, its swinging pull watched for a
+        #: bias, and a peg's lines go into the fit of its axis. I's bias
+        #: check, which holds still, turns it off: still
         #: samples draw no circle, and a monitor's window that runs from the
         #: circle into the hold read a 0.3 N bias on an ideal spring. Every
         #: primitive starts with it on.
@@ -821,7 +822,10 @@ class ModelEstimator:
                     kf.make_round(radius, DRAG_OFFSET_STD)
             side = side_towards_axis(f_mean, axis, sense)
             result = kf.update(p_mean, f_mean, side, torque=tau_mean)
-            if radius > 0.0 and side is not None and result.used:
+            if radius > 0.0 and side is not None and result.used and self.circling:
+                # a still gripper's lines all leave one tangent: the axis fit
+                # takes only the circle's (where along the axis the cable
+                # bears, the filter goes on following)
                 self._fit_peg(axis, sense, radius, p_mean, p_line, f_mean, side)
         else:
             result = kf.update(self._on_axis(p_mean, f_mean), f_mean, torque=tau_mean)
