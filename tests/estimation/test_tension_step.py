@@ -108,3 +108,15 @@ def test_non_finite_samples_are_skipped_and_bad_levels_refused() -> None:
     assert step.count(0) == before
     with pytest.raises(InvalidArgumentError, match="level"):
         step.add(2, [1.0, 0.0, 0.0])
+
+
+def test_a_steady_level_has_no_drift_and_a_ramp_has_its_own() -> None:
+    from tautwire.estimation.tension_step import level_drift
+
+    rng = np.random.default_rng(9)
+    steady = rng.normal(scale=0.05, size=(250, 3))
+    drift, cov = level_drift(steady)
+    assert np.all(np.abs(drift) <= 4.0 * np.sqrt(np.diag(cov)))
+    ramp = steady + np.outer(np.linspace(0.0, 1.0, 250), [0.2, 0.0, -0.1])
+    drift, cov = level_drift(ramp)
+    np.testing.assert_allclose(drift, [0.2, 0.0, -0.1], atol=5.0 * np.sqrt(cov[0, 0]))

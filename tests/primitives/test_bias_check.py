@@ -75,9 +75,24 @@ def test_no_bias_passes_and_a_bias_fails() -> None:
     assert "20." in detail or "19." in detail or "21." in detail
 
 
-def test_an_unmeasured_check_passes_and_says_so() -> None:
+def test_an_unmeasured_check_fails_and_says_so() -> None:
     ok, detail, shift = BiasCheck(0.0, 2.0, 300.0, 0.4).verdict()
-    assert ok and shift is None and "not measured" in detail
+    assert not ok and shift is None and "could not be measured" in detail
+
+
+def test_a_bias_drifting_during_a_level_fails_it() -> None:
+    # 0.3 N/s normal to the cable while the gripper holds still
+    rng = np.random.default_rng(5)
+    u = np.array([0.8, -0.6, 0.0])
+    normal = np.array([0.6, 0.8, 0.0])
+    check = BiasCheck(0.0, 2.0, 300.0, 0.4)
+    t = 0.0
+    while not check.done(t, check.set_point(t)):
+        f = check.set_point(t) * u + 0.3 * t * normal + rng.normal(scale=0.05, size=3)
+        check.add(t, f)
+        t += 0.004
+    ok, detail, _ = check.verdict()
+    assert not ok and "turned by" in detail
 
 
 class _LateBiasRobot(SpringCableRobot):

@@ -188,3 +188,23 @@ def test_a_creeping_cable_is_learnt_once_it_has_settled() -> None:
     report = run_step(robot, SingleArmTension("left", 2.0), ctx)
     assert report.success, report
     assert ctx.estimator.elasticity.k_hat == pytest.approx(1000.0, rel=0.1)
+
+
+def test_a_cable_that_goes_slack_after_it_was_taut_has_slipped() -> None:
+    """Taut at its set point, then slack for a second: D fails with ``slipped``."""
+    from tautwire.primitives import SingleArmTension
+    from tautwire.tasks import TickRecord, run_step
+    from tests.primitives.conftest import CONTACT, GRIPPER, context
+    from tests.primitives.spring_robot import SpringCableRobot
+
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=4)
+    ctx = context()
+    tension = SingleArmTension("left", 3.0, learn_timeout=30.0)
+
+    def on_tick(record: TickRecord) -> None:
+        if tension.phase != "approach" and robot.rest < 1.0:
+            robot.rest += 1.0  # the cable slips through its fixture
+
+    report = run_step(robot, tension, ctx, on_tick=on_tick)
+    assert report.outcome == "failure" and report.cause == "slipped", report
+    assert "below 0.33 of its set point" in report.detail

@@ -32,7 +32,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError
-from tautwire.estimation.effective_samples import mean_covariance
+from tautwire.estimation.effective_samples import effective_samples, mean_covariance
 
 FloatArray = NDArray[np.float64]
 
@@ -48,12 +48,40 @@ class TensionStepResult(NamedTuple):
         bias: The bias's part b_n [N] normal to the cable.  # (3,)
         bias_covariance: Its covariance [N^2].  # (3, 3)
         tensions: The two levels' mean pulls along u [N].
+        drifts: How much each level's pull changed normal to u [N] from its
+            first sample to its last (a linear trend): a still gripper's
+            cable pulls the same way throughout, a drifting bias does not.  # (3,) each
+        drift_covariances: Their covariances [N^2].  # (3, 3) each
     """
 
     direction: FloatArray
     bias: FloatArray
     bias_covariance: FloatArray
     tensions: tuple[float, float]
+    drifts: tuple[FloatArray, FloatArray]
+    drift_covariances: tuple[FloatArray, FloatArray]
+
+
+def level_drift(samples: ArrayLike) -> tuple[FloatArray, FloatArray]:
+    """The linear trend of ``samples`` (n, 3) over their span, first to last, and its covariance.
+
+    The samples are taken as evenly spaced in time; the covariance comes
+    from the residuals' scatter, counted by their effective number.
+    """
+    x = np.asarray(samples, dtype=float)
+    n = len(x)
+    t = np.arange(n, dtype=float) - 0.5 * (n - 1)
+    tt = float(t @ t)
+    if n < 3 or tt <= 0.0:
+        return np.zeros(3), np.full((3, 3), math.inf)
+    slope = (t @ (x - x.mean(axis=0))) / tt
+    r = x - x.mean(axis=0) - np.outer(t, slope)
+    scatter = (r.T @ r) / max(n - 2, 1)
+    scale = np.sqrt([n / effective_samples(r[:, i]) for i in range(3)])
+    span = float(n - 1)
+    drift: FloatArray = slope * span
+    cov: FloatArray = scatter * np.outer(scale, scale) / tt * span**2
+    return drift, cov
 
 
 def _normal_part(f1: FloatArray, f2: FloatArray) -> tuple[FloatArray, FloatArray]:
@@ -95,7 +123,7 @@ class TensionStep:
             return None
         (f1, c1), (f2, c2) = (mean_covariance(np.array(s)) for s in self._samples)
         step = float(np.linalg.norm(f1 - f2))
-        if not step > 10.0 * math.sqrt(float(np.trace(c1 + c2))):
+        if not step > 3.0 * math.sqrt(float(np.trace(c1 + c2))):
             return None  # the tension did not step: no direction to speak of
         u, b = _normal_part(f1, f2)
         h = 1e-6 * max(float(np.linalg.norm(f1)), 1.0)
@@ -108,7 +136,16 @@ class TensionStep:
             jac[:, i] = (plus - minus) / (2.0 * h)
         cov = np.zeros((6, 6))
         cov[:3, :3], cov[3:, 3:] = c1, c2
-        return TensionStepResult(u, b, jac @ cov @ jac.T, (float(u @ f1), float(u @ f2)))
+        keep = np.eye(3) - np.outer(u, u)
+        drifts = [level_drift(np.array(x)) for x in self._samples]
+        return TensionStepResult(
+            u,
+            b,
+            jac @ cov @ jac.T,
+            (float(u @ f1), float(u @ f2)),
+            (keep @ drifts[0][0], keep @ drifts[1][0]),
+            (keep @ drifts[0][1] @ keep, keep @ drifts[1][1] @ keep),
+        )
 
 
 def contact_shift(

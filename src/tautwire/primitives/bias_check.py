@@ -54,6 +54,8 @@ SHIFT_LIMIT = 0.003
 PEG_TOLERANCE = 0.003
 #: The shift must also exceed this many of its stds to fail the check.
 SIGMAS = 3.0
+#: A level's drift must exceed this many of its stds (and the limit) to fail it.
+DRIFT_SIGMAS = 5.0
 
 
 class BiasCheck:
@@ -153,7 +155,11 @@ class BiasCheck:
         """
         result = self._step.result()
         if result is None:
-            return True, "the tension step was not measured", None
+            return (
+                False,
+                "held still, the tension step could not be measured (the pull was not steady)",
+                None,
+            )
         shift, cov = contact_shift(result, self.span, max(result.tensions[0], 1e-9))
         parts: list[tuple[str, FloatArray, float]] = [("", np.eye(3), self.limit)]
         if self._axis is not None:
@@ -177,4 +183,24 @@ class BiasCheck:
             f" shows a {bias:.3f} N force bias normal to the cable, which moves the contact"
             f" estimate {' and '.join(moves)}"
         )
+        # a still gripper's cable pulls the same way throughout a level: a
+        # pull that turns is a bias drifting during the check (robustness
+        # trial 73: 0.86 N ramped in over 2.2 s, the step unmeasurable)
+        pairs = zip(result.drifts, result.drift_covariances, strict=True)
+        for level, (drift, drift_cov) in enumerate(pairs):
+            move = self.span / max(result.tensions[level], 1e-9) * drift
+            size = float(np.linalg.norm(move))
+            unit = move / size if size > 0.0 else np.zeros(3)
+            std = (
+                self.span
+                / max(result.tensions[level], 1e-9)
+                * math.sqrt(max(float(unit @ drift_cov @ unit), 0.0))
+            )
+            if size > self.limit and size > DRIFT_SIGMAS * std:
+                ok = False
+                detail += (
+                    f"; at {result.tensions[level]:.2f} N the pull turned by"
+                    f" {float(np.linalg.norm(drift)):.3f} N while the gripper held still"
+                    f" ({1e3 * size:.1f} mm at the contact, std {1e3 * std:.1f} mm)"
+                )
         return ok, detail, shift

@@ -14,6 +14,7 @@ from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
+from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tension_judge import TensionJudge
 from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
@@ -21,6 +22,12 @@ from tautwire.robot import Arm, Command, Observation
 
 #: Time constant [s] of the tension average that success is judged by.
 JUDGE_TIME = 0.1
+#: Once taut at the set point, a tension below this fraction of it for SLACK_TIME [s]
+#: is a slip (robustness trial 42: a drifting bias pulled a stiff cable off its peg at
+#: 0.4-0.7 N of a 2.5 N set point, and the gripper, chasing the bias, rose 0.5 m while
+#: the fit read k as 1 N/m, which let the travel bound grow to 21 m).
+SLACK_FRACTION = 1.0 / 3.0
+SLACK_TIME = 1.0
 #: The learning swing keeps the tension below this fraction of the force limit.
 FORCE_LIMIT_RESERVE = 0.8
 
@@ -96,7 +103,8 @@ class SingleArmTension(Primitive):
     ``force`` for ``hold_time`` in the hold phase. Failure: ``no_contact`` if
     the gripper travels ``max_travel`` (or past the travel bound) without the
     cable becoming taut; ``slipped`` past the travel bound after it was
-    taut; ``timeout``.
+    taut, or once the tension, taut at the set point before, stays below
+    a third of it for 1 s; ``timeout``.
 
     Args:
         arm: The gripper that holds the cable (it carries the FT sensor).
@@ -181,6 +189,7 @@ class SingleArmTension(Primitive):
         self.max_swing = float(max_swing)
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._travel = TravelBound(15.0)
+        self._slack = SlackWatch(SLACK_TIME, SLACK_FRACTION)
         self._desired: DualPose | None = None
         self._start_position = np.zeros(3)
         self._ever_taut = False
@@ -205,6 +214,7 @@ class SingleArmTension(Primitive):
         self._start_position = obs.gripper(self.arm).position.copy()
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._travel = TravelBound(ctx.limits.max_force)
+        self._slack = SlackWatch(SLACK_TIME, SLACK_FRACTION)
         self._ever_taut = False
         self._phase = "approach"
         self._learn_start = None
@@ -323,6 +333,14 @@ class SingleArmTension(Primitive):
         if held and holding:
             self.outcome = Outcome.success(
                 f"tension {tension:.2f} N held {self.hold_time:g} s{self._k_note(ctx)}"
+            )
+            return
+        if self._phase != "approach" and self._slack.update(obs.time, state.tension, self.force):
+            self.outcome = Outcome.failure(
+                "slipped",
+                f"the tension fell to {state.tension:.2f} N, below {SLACK_FRACTION:.2g} of its"
+                f" set point for {SLACK_TIME:g} s after the cable was taut at it: the cable no"
+                " longer holds where the model says",
             )
             return
         travel = float(np.linalg.norm(obs.gripper(self.arm).position - self._start_position))
