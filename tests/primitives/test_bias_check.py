@@ -52,14 +52,20 @@ def test_bad_arguments_are_refused() -> None:
         BiasCheck(0.0, 3.0, 100.0, math.nan)
 
 
-def _fed(bias: np.ndarray, span: float = 0.4, seed: int = 0) -> BiasCheck:
+def _fed(
+    bias: np.ndarray,
+    span: float = 0.4,
+    seed: int = 0,
+    noise: float = 0.08,
+    peg: tuple[np.ndarray, float] | None = None,
+) -> BiasCheck:
     """A check fed T u + b + noise at its own set points, every 4 ms."""
     rng = np.random.default_rng(seed)
     u = np.array([0.8, -0.6, 0.0])
-    check = BiasCheck(0.0, 2.0, 300.0, span)
+    check = BiasCheck(0.0, 2.0, 300.0, span, peg=peg)
     t = 0.0
     while not check.done(t, check.set_point(t)):
-        check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.08, size=3))
+        check.add(t, check.set_point(t) * u + bias + rng.normal(scale=noise, size=3))
         t += 0.004
     return check
 
@@ -131,14 +137,7 @@ def test_rotation_ends_with_the_check(bias: np.ndarray) -> None:
 
 
 def _fed_peg(bias: np.ndarray, radius: float = 0.006) -> BiasCheck:
-    rng = np.random.default_rng(3)
-    u = np.array([0.8, -0.6, 0.0])
-    check = BiasCheck(0.0, 2.0, 300.0, 0.4, peg=(np.array([0.0, 0.0, 1.0]), radius))
-    t = 0.0
-    while not check.done(t, check.set_point(t)):
-        check.add(t, check.set_point(t) * u + bias + rng.normal(scale=0.03, size=3))
-        t += 0.004
-    return check
+    return _fed(bias, seed=3, noise=0.03, peg=(np.array([0.0, 0.0, 1.0]), radius))
 
 
 def test_a_pegs_shift_is_judged_normal_to_and_along_its_axis() -> None:
