@@ -152,3 +152,61 @@ def test_a_pegs_shift_is_judged_normal_to_and_along_its_axis() -> None:
     # 0.03 N sideways: 6 mm normal to the axis, beyond half the tolerance
     ok, detail, _ = _fed_peg(np.array([0.018, 0.024, 0.0])).verdict()
     assert not ok and "normal to the peg's axis" in detail
+
+
+def test_the_shift_bound_is_what_the_check_leaves_open() -> None:
+    check = _fed(np.array([0.06, 0.08, 0.0]))
+    _, _, shift = check.verdict()
+    bound = check.shift_bound()
+    assert shift is not None and bound is not None
+    # S S^T + C: at least the measured shift's square, symmetric, PSD
+    assert float(shift @ bound @ shift) >= float(shift @ shift) ** 2
+    assert np.allclose(bound, bound.T) and np.all(np.linalg.eigvalsh(bound) >= -1e-15)
+    # a check without samples bounds nothing
+    assert BiasCheck(0.0, 2.0, 300.0, 0.4).shift_bound() is None
+
+
+def test_a_pegs_shift_bound_leaves_its_axis_out() -> None:
+    bound = _fed_peg(np.array([0.0, 0.0, 0.03])).shift_bound()
+    assert bound is not None
+    assert np.allclose(bound[2, :], 0.0) and np.allclose(bound[:, 2], 0.0)
+    assert bound[0, 0] > 0.0
+
+
+def test_a_coarse_check_leaves_the_estimate_untrusted() -> None:
+    """A still gripper's pull at 1 N with 0.08 N of noise: the check resolves mm only.
+
+    The circle's many lines trust the estimate; the check, 1 s a level,
+    resolves the shift at 0.3 m to about 3.4 mm and cannot vouch for it.
+    """
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, noise=0.08, seed=4)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 1.0), ctx).success
+    report = run_step(robot, RotateAroundFeaturePoint("left", math.pi, speed=0.5), ctx)
+    assert report.success, report
+    assert "no longer trusts" in report.detail
+    estimate = ctx.estimator.contact_estimate()
+    assert estimate is not None and not estimate.trusted
+
+
+def test_a_bias_bound_is_checked_and_kept_by_its_point() -> None:
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=21)
+    ctx = context(estimation_period=0.04)
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    assert run_step(robot, RotateAroundFeaturePoint("left", math.pi, speed=0.5), ctx).success
+    est = ctx.estimator
+    before = est.contact_estimate()
+    assert before is not None and before.trusted
+    est.bound_bias(np.diag([0.01, 0.0, 0.0]) ** 2)  # 10 mm along x: no longer trusted
+    after = est.contact_estimate()
+    assert after is not None and not after.trusted
+    point = est.graph.points[est.contact_index]  # type: ignore[index]
+    assert point.covariance is not None and point.covariance[0, 0] >= 1e-4  # at once
+    est.bound_bias(np.zeros((3, 3)))  # a later check replaces it
+    again = est.contact_estimate()
+    assert again is not None and again.trusted
+    for bad in (np.eye(2), np.full((3, 3), math.nan), np.array([[0, 1, 0], [0, 0, 0], [0, 0, 0]])):
+        with pytest.raises(InvalidArgumentError, match="bias bound"):
+            est.bound_bias(bad)
+    with pytest.raises(InvalidArgumentError, match="needs a point"):
+        context().estimator.bound_bias(np.zeros((3, 3)))

@@ -37,7 +37,8 @@ NEES coverage
 Written under the output folder: ``robustness.json`` (the figures, clean
 at the top level, ``faulty`` over every fault run and ``per_fault`` by fault
 type), ``robustness.md`` (the table, then the runs that were not clean),
-``robustness_trials.csv`` (every run: inputs, fault, outcome, errors),
+``robustness_trials.csv`` (every run: inputs, fault, outcome, errors and
+each step's detail),
 ``robustness_error_vs_yaw.png`` and ``robustness_stiffness.png``.
 """
 
@@ -145,6 +146,12 @@ def score_run(scene: Any, result: Any, half: str, fault: dict[str, Any] | None) 
         "cause": cause,
         "failed_step": None if failed is None else failed["letter"],
         "detail": detail,
+        "steps": " | ".join(
+            f"{s['letter']}: {s['outcome']}"
+            + (f" ({s['cause']})" if s.get("cause") else "")
+            + f": {s['detail']}"
+            for s in steps
+        ),
         "false_successes": int(result.false_successes),
         "max_force": float(result.max_force),
         "true_max_force": float(result.true_max_force),
@@ -189,6 +196,7 @@ def _failed_run(
         "cause": cause,
         "failed_step": None,
         "detail": detail,
+        "steps": "",
         "false_successes": 0,
         "max_force": 0.0,
         "true_max_force": 0.0,

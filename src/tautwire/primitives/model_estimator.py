@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from typing import NamedTuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from tautwire.errors import InvalidArgumentError, TautwireError
 from tautwire.estimation import ContactPointFilter, ElasticityEstimator, update_by_constraints
@@ -338,6 +338,10 @@ class ModelEstimator:
         #: The feature point that the contact filter estimates (None: none yet).
         self._filter_point: FeaturePoint | None = None
         self._design: FloatArray | None = None  # design position of the filter's point
+        #: The last bias check's bound on its point's estimate: the point and
+        #: the covariance [m^2] of the shift a force bias may have made
+        #: (:meth:`bound_bias`).
+        self._bias_bound: tuple[FeaturePoint, FloatArray] | None = None
         #: A contact change under test (None: the filter's point is as accepted).
         self._pending: ChangeHypothesis | None = None
         #: Iterations at which a hypothesised change was found spurious (the
@@ -409,9 +413,7 @@ class ModelEstimator:
         if (
             point is self._filter_point
             and accepted is not None
-            and self._largest_variance(
-                accepted._replace(P=accepted.P + self._tail_covariance(accepted.x))
-            )
+            and self._largest_variance(accepted._replace(P=accepted.P + self._systematic(accepted)))
             <= self.trust_limit() ** 2
             and self._agrees_with_design()
             and self._agrees_with_path(accepted.x)
@@ -425,8 +427,9 @@ class ModelEstimator:
         The accepted estimate (a hypothesised change does not count until
         accepted) with its reported covariance: the filter's P plus the line
         model's systematic error (``SYSTEMATIC_LINE_ERROR``, for a peg
-        ``ROUND_LINE_ERROR``), which does not average out over samples.
-        ``trusted`` says whether the model uses it (std within
+        ``ROUND_LINE_ERROR``), which does not average out over samples, the
+        hanging tail's (:meth:`_tail_covariance`) and what the last bias
+        check left open (:meth:`bound_bias`). ``trusted`` says whether the model uses it (std within
         :meth:`trust_limit` on the axes that matter, near its design).
         """
         accepted = self._accepted_estimate()
@@ -435,7 +438,7 @@ class ModelEstimator:
         point = self._filter_point
         peg = point is not None and point.label in self.round_fixtures
         floor = ROUND_LINE_ERROR if peg else SYSTEMATIC_LINE_ERROR
-        tail = self._tail_covariance(accepted.x)
+        tail = self._systematic(accepted)
         trusted = (
             self._largest_variance(accepted._replace(P=accepted.P + tail))
             <= self.trust_limit() ** 2
@@ -445,6 +448,47 @@ class ModelEstimator:
         return ContactEstimate(
             accepted.x.copy(), accepted.P + floor**2 * np.eye(3) + tail, accepted.radius, trusted
         )
+
+    def bound_bias(self, covariance: ArrayLike) -> None:
+        """Take a bias check's bound on the filter's point (primitive I's end).
+
+        A force bias shifts a contact estimated from lines as a whole, which
+        the lines' covariance never shows; a check that holds still at two
+        tensions measures that shift only to its own resolution
+        (:meth:`~tautwire.primitives.bias_check.BiasCheck.shift_bound`). The
+        bound is added to the point's reported covariance and to its trust
+        gate for as long as the filter estimates that point; a later check
+        replaces it.
+
+        Args:
+            covariance: The shift's mean square S S^T + C [m^2].  # (3, 3)
+
+        Raises:
+            InvalidArgumentError: for a covariance that is not a finite
+                symmetric 3 x 3 matrix, or when the filter estimates no point.
+        """
+        bound = np.asarray(covariance, dtype=float)
+        if (
+            bound.shape != (3, 3)
+            or not np.all(np.isfinite(bound))
+            or not np.allclose(bound, bound.T, atol=1e-12)
+        ):
+            raise InvalidArgumentError(
+                f"a bias bound is a finite symmetric 3 x 3 covariance [m^2], got {bound!r}"
+            )
+        if self._filter_point is None:
+            raise InvalidArgumentError("a bias bound needs a point the contact filter estimates")
+        self._bias_bound = (self._filter_point, bound.copy())
+        reported = self.contact_estimate()
+        if reported is not None and self._filter_point.covariance is not None:
+            self._filter_point.covariance = reported.covariance  # the model says so at once
+
+    def _systematic(self, state: FilterState) -> FloatArray:
+        """What the lines' covariance misses of ``state`` [m^2]: the tail's weight and a bias."""
+        out = self._tail_covariance(state.x)
+        if self._bias_bound is not None and self._bias_bound[0] is self._filter_point:
+            out = out + self._bias_bound[1]
+        return out
 
     def _tail_covariance(self, x: FloatArray) -> FloatArray:
         """What the hanging tail's weight compensation may miss, as a covariance [m^2].
