@@ -13,6 +13,7 @@ from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import ClipHeight, PivotPress, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
+from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
@@ -39,6 +40,16 @@ JAW_TOP = 0.008
 TABLE_CLEARANCE = 0.02
 #: Largest angle [rad] between the cable and the clip's slot.
 MAX_SLOT_ANGLE = math.radians(25.0)
+#: Farthest [m] the gripper may be from its aligning set point to start the push.
+ALIGN_TOLERANCE = 0.003
+#: Farthest [m] the cable's line may pass beside the seat to start the push:
+#: a cable whose centre passes outside a jaw's axis (2.6 mm off the slot's
+#: centre line for a 2.5 mm cable) is pushed down beside the jaws (the
+#: shipped harness's C2: 4.6 mm beside, with the gripper 3 mm off its set
+#: point and the cable 2 mm beside the tool centre point).
+ALIGN_MISS = 0.0007
+#: Time constant [s] of the low-pass on where the cable leaves the fingers.
+EXIT_TIME = 0.2
 
 
 class SingleArmClipping(Primitive):
@@ -49,7 +60,10 @@ class SingleArmClipping(Primitive):
     (:meth:`_leave`), not the peg's axis. With D's force control along the
     cable, the gripper first moves on the sphere about c (radius: what the
     tension leaves) until the cable's straight line passes ``ABOVE`` over
-    the clip's seat q, along the slot; then it pivots down about the clip's
+    the clip's seat q, along the slot: where the cable leaves the fingers
+    (on the force's line of action, :meth:`_target`) goes onto the line,
+    and the push starts once the line passes within ``ALIGN_MISS`` of the
+    seat (:meth:`_aligned`); then it pivots down about the clip's
     exit at ``PUSH_RATE``, with the tension raised to three times the clip's
     push force (:func:`push_tension`); where a soft cable's stretch would
     then leave too shallow a bend above the table to press ``PRESS_MARGIN``
@@ -106,6 +120,8 @@ class SingleArmClipping(Primitive):
         self._axis = ToolAxis()
         self._hold = current_pose(obs)
         self._slack = SlackWatch(1.0)
+        self._exit_offset: LowPass[np.ndarray] = LowPass(EXIT_TIME)
+        self._offset = np.zeros(3)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -192,13 +208,39 @@ class SingleArmClipping(Primitive):
         return force
 
     def _target(self, obs: Observation, state: TensionState) -> np.ndarray:
-        """The gripper's set point while aligning: on the line from c over the clip."""
+        """The gripper's set point while aligning: the cable's exit on the line over the clip.
+
+        The cable leaves the fingers where the force's line of action passes
+        (low-passed over ``EXIT_TIME``), a few mm beside or behind the tool
+        centre point after a regrip (E, B) or a hand-over: that point, not
+        the tool centre point, goes onto the line.
+        """
         c = self._contact
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
         w = (through - c) / float(np.linalg.norm(through - c))
-        radius = float(np.linalg.norm(obs.gripper(self.arm).position - c))
-        target: np.ndarray = c + radius * w
+        exit_point = obs.gripper(self.arm).position + self._offset
+        radius = float(np.linalg.norm(exit_point - c))
+        target: np.ndarray = c + radius * w - self._offset
         return target
+
+    def _aligned(self, me: np.ndarray, target: np.ndarray) -> bool:
+        """Whether the gripper is near enough its set point, and the cable over the seat.
+
+        The cable's miss beside the seat is the gripper's error across the
+        line, scaled down to the seat (the line turns about c).
+        """
+        error = me - target
+        if float(np.linalg.norm(error)) >= ALIGN_TOLERANCE:
+            return False
+        c = self._contact
+        through = self.info.position + np.array([0.0, 0.0, ABOVE])
+        w = through - c
+        w[2] = 0.0
+        n = np.array([-w[1], w[0], 0.0]) / max(float(np.linalg.norm(w)), 1e-9)
+        exit_point = me + self._offset
+        reach = float(np.hypot(*(exit_point - c)[:2]))
+        share = float(np.linalg.norm(w)) / max(reach, 1e-9)
+        return abs(float(error @ n)) * share < ALIGN_MISS
 
     def _pivot(self, obs: Observation) -> np.ndarray:
         """The set point while pushing: turned down by ``angle`` about the clip's exit.
@@ -226,11 +268,13 @@ class SingleArmClipping(Primitive):
         # where the cable leaves the fingers: on the force's line of action,
         # behind or beside the tool centre point after a regrip (E, B)
         leaves = line_point(me.position, wrench.force, wrench.torque)
+        if state.taut:
+            self._offset = self._exit_offset.update(obs.time, leaves - me.position)
         height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
-            if float(np.linalg.norm(me.position - target)) < 0.003:
+            if self._aligned(me.position, target):
                 self.phase, self._since = "push", obs.time
                 out = me.position - self.info.position
                 out[2] = 0.0

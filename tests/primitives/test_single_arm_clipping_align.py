@@ -1,0 +1,57 @@
+"""F's alignment: the cable's exit from the fingers goes onto the line over the seat."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from tautwire.primitives.context import ClipInfo
+from tautwire.primitives.single_arm_clipping import ABOVE, ALIGN_MISS, SingleArmClipping
+from tautwire.robot import GripperState, Observation, Wrench
+
+SEAT = np.array([0.30, 0.0, 0.08])
+CONTACT = np.array([0.10, 0.0, 0.08])
+
+
+def _aligning(offset: np.ndarray) -> SingleArmClipping:
+    f = SingleArmClipping("left", "C1")
+    f.info = ClipInfo(SEAT, 0.0, 2.5, 0.03)
+    f._contact = CONTACT.copy()
+    f._offset = offset
+    return f
+
+
+def _obs(p: np.ndarray) -> Observation:
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    grip = GripperState(p, q)
+    zero = Wrench("left", np.zeros(3), np.zeros(3))
+    return Observation(0.0, grip, grip, (zero,))
+
+
+@pytest.mark.parametrize("offset", [np.zeros(3), np.array([-0.009, 0.003, -0.004])])
+def test_the_exit_not_the_tool_centre_point_goes_onto_the_line(offset: np.ndarray) -> None:
+    f = _aligning(offset)
+    p = np.array([0.45, 0.02, 0.12])
+    target = f._target(_obs(p), None)  # type: ignore[arg-type]
+    through = SEAT + np.array([0.0, 0.0, ABOVE])
+    w = (through - CONTACT) / np.linalg.norm(through - CONTACT)
+    exit_point = target + offset
+    # on the line from the contact over the seat, as far out as the exit is now
+    assert np.linalg.norm(np.cross(exit_point - CONTACT, w)) < 1e-12
+    assert np.linalg.norm(exit_point - CONTACT) == pytest.approx(
+        np.linalg.norm(p + offset - CONTACT)
+    )
+
+
+def test_the_push_waits_for_the_line_to_pass_over_the_seat() -> None:
+    f = _aligning(np.zeros(3))
+    target = f._target(_obs(np.array([0.45, 0.0, 0.12])), None)  # type: ignore[arg-type]
+    assert f._aligned(target, target)
+    # 2 mm across at the gripper, 0.35 m out: 1.1 mm beside the seat, 0.2 m in
+    beside = target + np.array([0.0, 0.002, 0.0])
+    assert ALIGN_MISS < 0.002 * 0.2 / 0.35 and not f._aligned(beside, target)
+    # 2 mm along the line: the cable still passes over the seat
+    along = target + 0.002 * (target - CONTACT) / np.linalg.norm(target - CONTACT)
+    assert f._aligned(along, target)
+    # but never farther than the tolerance from the set point
+    assert not f._aligned(target + np.array([0.004, 0.0, 0.0]), target)
