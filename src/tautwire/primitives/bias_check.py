@@ -144,27 +144,6 @@ class BiasCheck:
         elif 2.0 * SETTLE + MEASURE <= t < 2.0 * SETTLE + 2.0 * MEASURE:
             self._step.add(1, force)
 
-    def shift_bound(self) -> FloatArray | None:
-        """What the check leaves open of the contact estimate's shift: S S^T + C [m^2] (3, 3).
-
-        The measured shift S and its covariance C: the mean square of the
-        shift a bias may have made, which a passed check bounds only to the
-        check's own resolution (robustness trial 130: an anchor 3.5 mm off,
-        trusted at 1.7 mm, where the check read 4.0 mm at a std of 3.4 mm).
-        For a peg only its part normal to the axis: along the axis the
-        bearing height changes with the tension. None when the step could
-        not be measured.
-        """
-        result = self._step.result()
-        if result is None:
-            return None
-        shift, cov = contact_shift(result, self.span, max(result.tensions[0], 1e-9))
-        bound: FloatArray = np.outer(shift, shift) + cov
-        if self._axis is not None:
-            normal = np.eye(3) - np.outer(self._axis, self._axis)
-            bound = normal @ bound @ normal
-        return bound
-
     def verdict(self) -> tuple[bool, str, FloatArray | None]:
         """Whether the bias leaves the contact within its limits, why, and the shift [m].
 

@@ -52,11 +52,7 @@ class RotateAroundFeaturePoint(Primitive):
     Success: the gripper has turned ``angle`` about ``axis`` around the
     contact and, held still there at two tensions, the force sensor shows no
     bias that moves a trusted contact estimate beyond 3 mm, or half a peg's
-    tolerance (:mod:`~tautwire.primitives.bias_check`; else ``sensor_bias``).
-    Model edits: the contact's estimate keeps what the check leaves open of
-    a bias's shift in its covariance
-    (:meth:`~tautwire.primitives.model_estimator.ModelEstimator.bound_bias`),
-    so a check too coarse to vouch for it leaves it untrusted. The turn
+    tolerance (:mod:`~tautwire.primitives.bias_check`; else ``sensor_bias``). The turn
     is summed period by period about the current estimate (the span from
     the contact to the gripper turns with it; a jump of the estimate
     adds no turn, and no force-sensing fault enters the count: counted on
@@ -231,17 +227,6 @@ class RotateAroundFeaturePoint(Primitive):
                 # (Table I I:0, an anchor untrusted for its tail's weight, read 4.5 mm)
                 ok = True
                 detail += ", on an estimate the model does not trust"
-            bound = self._check.shift_bound()
-            if bound is not None and estimate is not None:
-                # the check rules out a shift only to its own resolution: the
-                # estimate's covariance keeps what it leaves open
-                ctx.estimator.bound_bias(bound)
-                after = ctx.estimator.contact_estimate()
-                if estimate.trusted and after is not None and not after.trusted:
-                    detail += (
-                        "; the model no longer trusts the estimate: the check cannot"
-                        " rule out the shift"
-                    )
             if ok:
                 self.outcome = Outcome.success(f"{self._turn_detail}; {detail}")
             else:
