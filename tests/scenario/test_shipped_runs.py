@@ -17,9 +17,10 @@ from tautwire.scenario.registry import resolve_scenario, scenario_names
 
 #: Shipped scenarios that do not yet run to success, and why (measured).
 NOT_YET = {
-    "harness": "F into C2 after the peg P1: the cable goes down 5-9 mm beside the slot (the "
-    "jaws catch it within about 2.6 mm) on every aim, at the slot and 3 mm to either side; "
-    "the steps before are true and the failure is honest (not_clipped, 0 false successes)",
+    "harness": "W1 now runs its route to the end, every step true; W2 does not yet: F "
+    "into C5 after C4 presses the cable down 37 mm beside the slot (not_clipped, honest), "
+    "and on the full board's noise the winding of P2 (349 deg) once ended with sensor_bias "
+    "from the swing's monitor (1.18 N read on a clean sensor); 0 false successes",
 }
 
 
