@@ -9,6 +9,7 @@ from tautwire.primitives.clip_sensing import (
     PRESS_MARGIN,
     ClipHeight,
     PivotPress,
+    far_rise,
     height_at_clip,
     push_tension,
 )
@@ -133,3 +134,16 @@ def test_the_miss_is_the_horizontal_distance_of_the_line_from_the_point(
     d = np.array([-math.cos(angle), math.sin(angle), -0.3])
     d /= np.linalg.norm(d)
     assert miss_at_clip(p, d, np.zeros(3)) == pytest.approx(distance * abs(math.sin(angle)))
+
+
+@given(st.floats(-math.pi, math.pi), st.floats(0.05, 0.4), st.floats(-0.1, 0.1))
+def test_the_far_rise_is_taken_from_the_slot_end_towards_the_contact(
+    yaw: float, run: float, rise: float
+) -> None:
+    seat = np.array([0.3, -0.1, 0.08])
+    slot = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    half = 0.015
+    for sense in (1.0, -1.0):  # the contact beyond either end of the slot
+        entry = seat + sense * half * slot
+        contact = entry + sense * run * slot + np.array([0.0, 0.0, rise])
+        assert far_rise(contact, seat, slot, half) == pytest.approx(math.atan2(rise, run))

@@ -77,6 +77,38 @@ def miss_at_clip(p_gripper: FloatArray, direction: FloatArray, point: FloatArray
     return abs(rx * dy - ry * dx) / math.sqrt(n2)
 
 
+#: Steepest rise [rad] of the cable from a clip's entry to the far contact
+#: for one arm to clip it. The arm's bend presses the slot's exit end in;
+#: the entry end is pressed only by the cable's kink there, f (s_in -
+#: sin(rise)), s_in the slope the cable can take inside the jaws, from
+#: their axes down to the seat within its shortest bend (for the simulated
+#: cable one 20 mm segment: 4.3 mm / 20 mm, 12 deg). Steeper, the far side
+#: holds the entry end up in the jaws' throat, where the force's line reads
+#: as seated: Table I F (seed 0, 100 trials at dffa5c6) had all 13 of its
+#: false successes at rises of 14-18 deg, none below 14 deg.
+MAX_FAR_RISE = math.radians(13.0)
+
+
+def far_rise(contact: FloatArray, seat: FloatArray, slot: FloatArray, half_length: float) -> float:
+    """Rise [rad] of the cable from the clip's entry (its slot end towards ``contact``) to it.
+
+    Args:
+        contact: Where the cable leaves the far contact [m].  # (3,)
+        seat: The clip's seat [m].  # (3,)
+        slot: Unit direction of the slot.  # (3,)
+        half_length: Half the clip's length along the slot [m].
+
+    Returns:
+        The angle above the horizontal (negative when the contact is lower).
+    """
+    c = np.asarray(contact, dtype=float)
+    q = np.asarray(seat, dtype=float)
+    u = np.asarray(slot, dtype=float)
+    side = 1.0 if float((c - q) @ u) >= 0.0 else -1.0
+    far = c - (q + side * half_length * u)
+    return math.atan2(float(far[2]), math.hypot(float(far[0]), float(far[1])))
+
+
 def push_tension(push_force: float, tension: float | None, force_limit: float) -> float:
     """Tension [N] to keep while pushing into a clip that needs ``push_force`` [N].
 

@@ -11,7 +11,13 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.estimation.force_line import line_point
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
-from tautwire.primitives.clip_sensing import ClipHeight, PivotPress, push_tension
+from tautwire.primitives.clip_sensing import (
+    MAX_FAR_RISE,
+    ClipHeight,
+    PivotPress,
+    far_rise,
+    push_tension,
+)
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
@@ -80,7 +86,9 @@ class SingleArmClipping(Primitive):
     table (``TABLE_CLEARANCE``; the message gives the planned press against
     the clip's push force), or the cable did not stay in after the last
     attempt; ``precondition`` if the clip is not between the contact and
-    the gripper or its slot is across the cable; ``slipped`` if the cable
+    the gripper or its slot is across the cable, or the cable rises more
+    than :data:`~tautwire.primitives.clip_sensing.MAX_FAR_RISE` from the
+    clip to the contact; ``slipped`` if the cable
     goes slack; ``timeout``.
 
     Args:
@@ -148,6 +156,16 @@ class SingleArmClipping(Primitive):
             self.outcome = Outcome.failure(
                 "precondition",
                 f"the slot of {self.clip} is {math.degrees(angle):.0f} deg across the cable",
+            )
+            return
+        rise = far_rise(self._contact, seat, info.slot, 0.5 * info.length)
+        if rise > MAX_FAR_RISE:
+            self.outcome = Outcome.failure(
+                "precondition",
+                f"the cable rises {math.degrees(rise):.0f} deg from {self.clip} to its contact"
+                f" (at most {math.degrees(MAX_FAR_RISE):.0f}): its far side would hold the"
+                " slot's entry end up in the jaws' throat, which reads as clipped; hold the"
+                " contact's side lower or clip with both arms (C)",
             )
             return
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
