@@ -162,7 +162,7 @@ class SingleArmClipping(Primitive):
         if rise > MAX_FAR_RISE:
             self.outcome = Outcome.failure(
                 "precondition",
-                f"the cable rises {math.degrees(rise):.0f} deg from {self.clip} to its contact"
+                f"the cable rises {math.degrees(rise):.1f} deg from {self.clip} to its contact"
                 f" (at most {math.degrees(MAX_FAR_RISE):.0f}): its far side would hold the"
                 " slot's entry end up in the jaws' throat, which reads as clipped; hold the"
                 " contact's side lower or clip with both arms (C)",
