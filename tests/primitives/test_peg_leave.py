@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tautwire.primitives.peg_leave import leave_point, wrap_side
+from tautwire.primitives.peg_leave import axis_offset, leave_point, turn_side, wrap_side
 
 AXIS = np.array([0.25, 0.15, 0.08])
 
@@ -45,3 +45,31 @@ def test_a_line_beside_the_axis_says_which_side_the_peg_is_on() -> None:
     assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == 1.0
     towards = AXIS + np.array([0.0, 0.008, 0.0]) - gripper
     assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == -1.0
+
+
+@given(st.floats(-math.pi, math.pi), st.floats(0.05, 0.3), st.sampled_from([1.0, -1.0]))
+def test_the_tangent_line_passes_a_radius_beside_the_axis_on_its_side(
+    bearing: float, distance: float, side: float
+) -> None:
+    rho = 0.0085
+    through = AXIS + distance * np.array([math.cos(bearing), math.sin(bearing), 0.0])
+    t = leave_point(AXIS, rho, through, side)
+    gripper = t + 1.5 * (through - t) + np.array([0.0, 0.0, 0.03])  # above: the line slopes
+    direction = (t - gripper) / np.linalg.norm(t - gripper)
+    assert axis_offset(AXIS, gripper, direction) == pytest.approx(side * rho, rel=1e-6)
+
+
+def test_the_path_turning_round_the_peg_gives_its_side() -> None:
+    # from the west, round the peg, to the north-east: a left turn, the peg on the left
+    before = AXIS + np.array([-0.12, -0.025, 0.0])
+    gripper = AXIS + np.array([0.15, 0.25, 0.04])
+    assert turn_side(before, AXIS, gripper) == 1.0
+    # to the south-east: a right turn
+    assert turn_side(before, AXIS, AXIS + np.array([0.15, -0.25, 0.0])) == -1.0
+    # straight on: no side
+    assert turn_side(before, AXIS, AXIS + 2.0 * (AXIS - before)) == 0.0
+    # the leave point on that side puts the line from it to the gripper beside the
+    # axis with the peg on the cable's left, as the force's line of the real cable
+    t = leave_point(AXIS, 0.0085, gripper, 1.0)
+    direction = (t - gripper) / np.linalg.norm(t - gripper)
+    assert wrap_side(AXIS, gripper, direction) == 1.0
