@@ -85,7 +85,7 @@ def miss_at_clip(p_gripper: FloatArray, direction: FloatArray, point: FloatArray
 #: cable one 20 mm segment: 4.3 mm / 20 mm, 12 deg). Steeper, the far side
 #: holds the entry end up in the jaws' throat, where the force's line reads
 #: as seated: Table I F (seed 0, 100 trials at dffa5c6) had all 13 of its
-#: false successes at rises of 14-18 deg, none below 14 deg.
+#: false successes at rises of 15-20 deg from the entry, none below 15 deg.
 MAX_FAR_RISE = math.radians(13.0)
 
 

@@ -29,10 +29,8 @@ def wrap_side(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatArr
         the peg to the gripper), -1 on its right, 0 if the line passes
         through the axis (no side).
     """
-    heading = -np.asarray(direction, dtype=float)  # from the peg towards the gripper
-    r = np.asarray(axis_point, dtype=float) - np.asarray(p_gripper, dtype=float)
-    cross = float(heading[0] * r[1] - heading[1] * r[0])
-    return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
+    offset = axis_offset(axis_point, p_gripper, direction)
+    return 0.0 if abs(offset) < 1e-12 else math.copysign(1.0, offset)
 
 
 def axis_offset(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatArray) -> float:
@@ -47,7 +45,7 @@ def axis_offset(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatA
         p_gripper: Gripper position [m].  # (3,)
         direction: Unit tension direction from the gripper towards the peg.  # (3,)
     """
-    heading = -np.asarray(direction, dtype=float)[:2]
+    heading = -np.asarray(direction, dtype=float)[:2]  # from the peg towards the gripper
     n = float(np.hypot(heading[0], heading[1]))
     if n < 1e-9:
         return 0.0

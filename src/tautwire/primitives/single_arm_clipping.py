@@ -215,10 +215,10 @@ class SingleArmClipping(Primitive):
     def _before(ctx: PrimitiveContext) -> np.ndarray | None:
         """The model's nearest constrained point beyond the contact, away from the gripper."""
         est = ctx.estimator
-        c, g = est.contact_index, est.gripper_index
-        if c is None or g is None:
+        c = est.contact_index
+        if c is None:
             return None
-        step = -1 if c < g else 1
+        step = -1 if c < est.gripper_index else 1
         j = c + step
         points = ctx.graph.points
         while 0 <= j < len(points):
