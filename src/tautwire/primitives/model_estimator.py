@@ -314,6 +314,10 @@ class ModelEstimator:
         self.round_fixtures = dict(round_fixtures or {})
         self._rotation: tuple[FloatArray, float] | None = None
         self._rotations = 0  # how many rotations were set (a new path for each)
+        #: The wrap round a circled peg, followed period by period: (the peg's
+        #: point, the rotation's count, the wrap angle [rad], the last
+        #: direction [rad] from the peg to the gripper); None while no peg is circled.
+        self._wrap: tuple[FeaturePoint, int, float, float] | None = None
         self.iterations = 0  # contact filter iterations so far
         self.changes: list[int] = []  # iterations at which a new contact was declared
         self._sum_p = np.zeros(3)
@@ -729,6 +733,7 @@ class ModelEstimator:
         # the free tail beyond the gripper hangs from it: its weight is part
         # of the sensed force, not of the taut edge (equ:edge_tension with the
         # other edge's tension the tail's weight, p_hat_{i-1} f_{i-1} = m g)
+        self._follow_wrap(c)
         self._tail = self._tail_weight(g, c, float(p_g[2]))
         f_raw = wrench.force + np.array([0.0, 0.0, self._tail])
         filtered = self._track(c)
@@ -1185,7 +1190,12 @@ class ModelEstimator:
         the peg (the anchor behind it), round the peg, to the gripper turns
         by (a rotation may unwind the cable as well as wind it); where that
         route is straight, the rotation's own sense (a peg that the taut span
-        sweeps onto is wound in the sense of the sweep).
+        sweeps onto is wound in the sense of the sweep). The route's turn is
+        followed period by period (:meth:`_follow_wrap`), so a winding of
+        more than half a turn keeps its sense: the angle between the routes
+        in and out wraps past 180 deg there (the shipped harness's W2 wound
+        P2 once, and the sense read from that angle flipped half way, which
+        put the axis fit's lines on the wrong side: 24 mm off, trusted).
         """
         c = self.contact_index
         if self.rotation is None or c is None:
@@ -1199,6 +1209,27 @@ class ModelEstimator:
                 return self.rotation[0], self.rotation[1], 0.0
             return None
         axis, sense = self.rotation
+        wrap = self._wrap_angle(c)
+        if wrap is not None and abs(wrap[0]) > math.radians(10.0):
+            sense = math.copysign(1.0, wrap[0]) * wrap[1]
+        return axis, sense, fixture[1]
+
+    def _wrap_geometry(self, c: int) -> tuple[float, float] | None:
+        """The route's turn [rad] round the peg at point ``c``, in (-pi, pi], and its orientation.
+
+        The signed angle about the rotation's axis from the route into the
+        peg (from the constrained point before it, away from the gripper) to
+        the route out (from the peg to the gripper); the orientation is +1
+        when the cable runs from the start towards the gripper, else -1
+        (the sense of the bend is then the opposite). None without a
+        rotation, a peg of the design at ``c`` or a point before it.
+        """
+        if self.rotation is None:
+            return None
+        fixture = self.round_fixtures.get(self.graph.points[c].label)
+        if fixture is None:
+            return None
+        axis = self.rotation[0]
         g = self.gripper_index
         step = -1 if c < g else 1
         points = self.graph.points
@@ -1210,17 +1241,54 @@ class ModelEstimator:
             ),
             None,
         )
-        if before is not None:
-            peg = fixture[0]
-            inward = peg - before.position
-            outward = points[g].position - peg
-            inward -= axis * float(axis @ inward)
-            outward -= axis * float(axis @ outward)
-            turn = float(axis @ cross3(inward, outward))
-            scale = norm3(inward) * norm3(outward)
-            if scale > 0.0 and abs(turn) > math.sin(math.radians(10.0)) * scale:
-                sense = math.copysign(1.0, turn) * (1.0 if step < 0 else -1.0)
-        return axis, sense, fixture[1]
+        if before is None:
+            return None
+        peg = fixture[0]
+        inward = peg - before.position
+        p_g = self._gripper_positions.get(self.arm, points[g].position)
+        outward = p_g - peg
+        inward = inward - axis * float(axis @ inward)
+        outward = outward - axis * float(axis @ outward)
+        if norm3(inward) < 1e-9 or norm3(outward) < 1e-9:
+            return None
+        angle = math.atan2(float(axis @ cross3(inward, outward)), float(inward @ outward))
+        return angle, 1.0 if step < 0 else -1.0
+
+    def _follow_wrap(self, c: int | None) -> None:
+        """Follow the route's turn round a circled peg by this period's change of it.
+
+        The angle between the routes in and out only says the turn modulo
+        a full turn; summed from its changes (each under half a turn), it
+        counts windings (see :meth:`_round_contact`). A new peg or rotation
+        starts from the angle itself.
+        """
+        geometry = None if c is None else self._wrap_geometry(c)
+        if geometry is None or c is None:
+            self._wrap = None
+            return
+        angle, orientation = geometry
+        point = self.graph.points[c]
+        if self._wrap is None or self._wrap[0] is not point or self._wrap[1] != self._rotations:
+            wrap = angle
+            assert self.rotation is not None  # a geometry needs one
+            if abs(angle) > math.radians(170.0) and (
+                math.copysign(1.0, angle) * orientation != self.rotation[1]
+            ):
+                wrap = angle - math.copysign(2.0 * math.pi, angle)
+            self._wrap = (point, self._rotations, wrap, angle)
+            return
+        step = math.remainder(angle - self._wrap[3], 2.0 * math.pi)
+        self._wrap = (point, self._rotations, self._wrap[2] + step, angle)
+
+    def _wrap_angle(self, c: int) -> tuple[float, float] | None:
+        """(wrap angle [rad], orientation) round the peg at point ``c``: followed, else read now."""
+        geometry = self._wrap_geometry(c)
+        if geometry is None:
+            return None
+        wrap = self._wrap
+        if wrap is not None and wrap[0] is self.graph.points[c] and wrap[1] == self._rotations:
+            return wrap[2], geometry[1]
+        return geometry
 
     def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
         """The gripper position shifted so that its line passes a round contact's axis."""

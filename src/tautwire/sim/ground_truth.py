@@ -41,7 +41,7 @@ class FixtureContact:
         cable: Name of the cable touching it.
         point: The true contact [m], world frame: for an anchor or a clip
             where the cable leaves it, for a peg the point on the peg's axis
-            at the cable's height.  # (3,)
+            at the cable's height (its contact forces' centre of pressure).  # (3,)
         force: Magnitude [N] of the total contact force on the cable there
             (0 for an anchor, which holds the cable by a fixed vertex).
     """
@@ -452,7 +452,12 @@ class GroundTruth:
             fixture = world.spec.fixture(name)
             total = sum(f for _, f in hits)
             if isinstance(fixture, PegSpec):
-                z = float(np.mean([p[2] for p, _ in hits]))
+                # the centre of pressure along the axis: where the peg holds the
+                # cable (a free tail dragged against its foot bears next to
+                # nothing; unweighted, on the shipped harness's W2 it put P2 23 mm low)
+                heights = np.array([p[2] for p, _ in hits])
+                weights = np.array([f for _, f in hits])
+                z = float(np.average(heights, weights=weights) if total > 0.0 else np.mean(heights))
                 z = min(z, fixture.position[2] + fixture.height)
                 point = np.array([fixture.position[0], fixture.position[1], z])
             elif isinstance(fixture, ClipSpec):
