@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tautwire.primitives.peg_leave import leave_point, wrap_side
+from tautwire.primitives.peg_leave import axis_offset, leave_point, turn_side, wrap_side
 
 AXIS = np.array([0.25, 0.15, 0.08])
 
@@ -29,6 +29,11 @@ def test_the_line_from_the_leave_point_is_tangent_and_keeps_the_peg_on_its_side(
     gripper = t + 1.5 * (through - t)
     direction = (t - gripper) / np.linalg.norm(t - gripper)
     assert wrap_side(AXIS, gripper, direction) == side
+    # and its line passes a radius beside the axis, also when it slopes
+    assert axis_offset(AXIS, gripper, direction) == pytest.approx(side * rho, rel=1e-6)
+    above = gripper + np.array([0.0, 0.0, 0.03])
+    sloped = (t - above) / np.linalg.norm(t - above)
+    assert axis_offset(AXIS, above, sloped) == pytest.approx(side * rho, rel=1e-6)
 
 
 def test_without_a_side_or_from_inside_the_circle_it_is_the_axis_point() -> None:
@@ -45,3 +50,19 @@ def test_a_line_beside_the_axis_says_which_side_the_peg_is_on() -> None:
     assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == 1.0
     towards = AXIS + np.array([0.0, 0.008, 0.0]) - gripper
     assert wrap_side(AXIS, gripper, towards / np.linalg.norm(towards)) == -1.0
+
+
+def test_the_path_turning_round_the_peg_gives_its_side() -> None:
+    # from the west, round the peg, to the north-east: a left turn, the peg on the left
+    before = AXIS + np.array([-0.12, -0.025, 0.0])
+    gripper = AXIS + np.array([0.15, 0.25, 0.04])
+    assert turn_side(before, AXIS, gripper) == 1.0
+    # to the south-east: a right turn
+    assert turn_side(before, AXIS, AXIS + np.array([0.15, -0.25, 0.0])) == -1.0
+    # straight on: no side
+    assert turn_side(before, AXIS, AXIS + 2.0 * (AXIS - before)) == 0.0
+    # the leave point on that side puts the line from it to the gripper beside the
+    # axis with the peg on the cable's left, as the force's line of the real cable
+    t = leave_point(AXIS, 0.0085, gripper, 1.0)
+    direction = (t - gripper) / np.linalg.norm(t - gripper)
+    assert wrap_side(AXIS, gripper, direction) == 1.0

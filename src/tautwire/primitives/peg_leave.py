@@ -29,9 +29,41 @@ def wrap_side(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatArr
         the peg to the gripper), -1 on its right, 0 if the line passes
         through the axis (no side).
     """
-    heading = -np.asarray(direction, dtype=float)  # from the peg towards the gripper
-    r = np.asarray(axis_point, dtype=float) - np.asarray(p_gripper, dtype=float)
-    cross = float(heading[0] * r[1] - heading[1] * r[0])
+    offset = axis_offset(axis_point, p_gripper, direction)
+    return 0.0 if abs(offset) < 1e-12 else math.copysign(1.0, offset)
+
+
+def axis_offset(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatArray) -> float:
+    """Signed horizontal distance [m] of the peg's axis from the force's line.
+
+    Positive on the cable's left, as :func:`wrap_side`; the line of a cable
+    leaving the peg tangentially passes a peg radius plus a cable radius
+    beside the axis.
+
+    Args:
+        axis_point: A point [m] of the peg's (vertical) axis.  # (3,)
+        p_gripper: Gripper position [m].  # (3,)
+        direction: Unit tension direction from the gripper towards the peg.  # (3,)
+    """
+    heading = -np.asarray(direction, dtype=float)[:2]  # from the peg towards the gripper
+    n = float(np.hypot(heading[0], heading[1]))
+    if n < 1e-9:
+        return 0.0
+    r = (np.asarray(axis_point, dtype=float) - np.asarray(p_gripper, dtype=float))[:2]
+    return float(heading[0] * r[1] - heading[1] * r[0]) / n
+
+
+def turn_side(before: FloatArray, axis_point: FloatArray, p_gripper: FloatArray) -> float:
+    """The wrap side of a peg from the cable's path: where it comes from, the peg, the gripper.
+
+    A cable from ``before`` round the peg to the gripper turns towards the
+    peg: a left turn (seen from above) wraps it with the axis on the cable's
+    left, +1 as :func:`wrap_side`; a right turn -1; 0 for a straight path.
+    Right for wraps under half a turn.
+    """
+    a = (np.asarray(axis_point, dtype=float) - np.asarray(before, dtype=float))[:2]
+    b = (np.asarray(p_gripper, dtype=float) - np.asarray(axis_point, dtype=float))[:2]
+    cross = float(a[0] * b[1] - a[1] * b[0])
     return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
 
 

@@ -23,7 +23,7 @@ from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
-from tautwire.primitives.peg_leave import leave_point, wrap_side
+from tautwire.primitives.peg_leave import axis_offset, leave_point, turn_side, wrap_side
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
@@ -182,7 +182,10 @@ class SingleArmClipping(Primitive):
         (the filter's estimate, else the design's peg + cable radius) beside
         the axis point the model holds, on the side it wraps it now
         (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
-        line): the tangent point of the line over the clip
+        line; where that line passes within half the radius of the axis, too
+        near to tell, the side the model's path turns round the peg,
+        :func:`~tautwire.primitives.peg_leave.turn_side`, from the
+        constrained point before it): the tangent point of the line over the clip
         (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
         axis would put the cable a radius beside the slot.
         """
@@ -199,8 +202,30 @@ class SingleArmClipping(Primitive):
             else est.round_fixtures[label][1]
         )
         side = wrap_side(c, p_gripper, state.direction)
+        if abs(axis_offset(c, p_gripper, state.direction)) < 0.5 * radius:
+            # the line passes too near the axis to tell the side (1 deg of
+            # direction error at 0.3 m is 5 mm): the side the cable's path turns
+            before = self._before(ctx)
+            turn = 0.0 if before is None else turn_side(before, c, p_gripper)
+            side = turn if turn != 0.0 else side
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
+
+    @staticmethod
+    def _before(ctx: PrimitiveContext) -> np.ndarray | None:
+        """The model's nearest constrained point beyond the contact, away from the gripper."""
+        est = ctx.estimator
+        c = est.contact_index
+        if c is None:
+            return None
+        step = -1 if c < est.gripper_index else 1
+        j = c + step
+        points = ctx.graph.points
+        while 0 <= j < len(points):
+            if points[j].is_constrained:
+                return points[j].position.copy()
+            j += step
+        return None
 
     def _plan_force(self, p_gripper: np.ndarray, tension: float, ctx: PrimitiveContext) -> float:
         """The push tension [N]: three times the push force, unless the bend cannot press enough.
