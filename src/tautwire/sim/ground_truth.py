@@ -253,9 +253,11 @@ class GroundTruth:
 
         The cable's centre line, where it passes nearest the seat, lies within
         the slot (along it within half the clip's length, across it within
-        the channel's half width) and below the axes of the closed jaws: it
-        has passed the jaws' narrowest gap, which a cable resting on the
-        jaws has not.
+        the channel's half width), below the axes of the closed jaws and
+        above the channel's floor: it has passed the jaws' narrowest gap,
+        which a cable resting on the jaws has not, and not gone through the
+        floor (a cable snapping in can, in a time step; on the shipped
+        harness's W2 one lay 35 mm under C5's seat, read as clipped).
         """
         spec = self._fixture(clip)
         if not isinstance(spec, ClipSpec):
@@ -268,7 +270,7 @@ class GroundTruth:
         return (
             abs(along) <= 0.5 * self._world.options.clip_length
             and math.sqrt(max(across, 0.0)) <= design.wall_gap
-            and float(q[2]) < design.jaw_height
+            and -design.cable_radius <= float(q[2]) < design.jaw_height
         )
 
     def span(self, cable: str, arm: Arm) -> TautSpan | None:

@@ -34,6 +34,8 @@ _STIFF_CONTACT = 'solref="0.002 1"'
 _HOLD_SOLREF = "0.0005 1"
 _HOLD_SOLIMP = "0.9999 0.9999 0.001"
 
+#: Deepest floor [m] of a clip's channel (a solid block under its seat).
+BASE_DEPTH = 0.012
 #: Gripper finger pad half sizes [m]: along the cable, thickness, height.
 PAD_HALF = (0.01, 0.003, 0.008)
 FINGER_MASS = 0.02  # kg
@@ -165,7 +167,11 @@ def _clip_xml(clip: ClipSpec, design: ClipDesign, options: SimOptions) -> str:
     half_len = 0.5 * options.clip_length
     r = design.cable_radius
     wall_t = 0.002
-    base_h = 0.002
+    # the channel's floor: a solid block, as deep as the clip stands above
+    # the table allows (up to 12 mm), so that a cable snapping in through the
+    # jaws cannot pass through it in a time step (a 2 mm floor let W2's
+    # cable of the shipped harness through C5, 35 mm below the seat)
+    base_h = float(np.clip(clip.position[2] - r - options.table_height, 0.002, BASE_DEPTH))
     wall_top = design.jaw_height - design.jaw_radius - 3e-4
     wall_bottom = -r - base_h
     quat = [np.cos(0.5 * clip.yaw), 0.0, 0.0, np.sin(0.5 * clip.yaw)]
@@ -203,8 +209,8 @@ def _clip_xml(clip: ClipSpec, design: ClipDesign, options: SimOptions) -> str:
     if stand > 1e-4:
         parts.append(
             f'<geom type="box" pos="0 0 {wall_bottom - 0.5 * stand:.6g}"'
-            f' size="{0.6 * half_len:.6g} {0.6 * outer:.6g} {0.5 * stand:.6g}" contype="0"'
-            ' conaffinity="0" rgba="0.3 0.3 0.3 1"/>'
+            f' size="{0.6 * half_len:.6g} {0.6 * outer:.6g} {0.5 * stand:.6g}" {common}'
+            ' rgba="0.3 0.3 0.3 1"/>'
         )
     return (
         f'<body name="{clip.name}" pos="{_v(clip.position)}" quat="{_v(quat)}">'
