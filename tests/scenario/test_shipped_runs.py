@@ -17,11 +17,9 @@ from tautwire.scenario.registry import resolve_scenario, scenario_names
 
 #: Shipped scenarios that do not yet run to success, and why (measured).
 NOT_YET = {
-    "harness": "W1 now runs its route to the end, every step true; W2 does not yet: F "
-    "into C5 after C4 presses the cable down beside the slot (its line 37 mm below the seat; "
-    "not_clipped, honest), "
-    "and on the full board's noise the winding of P2 (349 deg) once ended with sensor_bias "
-    "from the swing's monitor (1.18 N read on a clean sensor); 0 false successes",
+    "harness": "W1 runs its route to the end and W2 winds P2 once, every step true; W2's F "
+    "into C4 then fails honestly (not_clipped: the cable slides off the jaws beside the "
+    "slot); 0 false successes",
 }
 
 

@@ -7,6 +7,7 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 from hypothesis import given, settings
@@ -25,6 +26,7 @@ from tautwire.tasks.planner import (
     RouteError,
     RouteProblem,
     plan_routes,
+    tail_collision,
 )
 
 ROBOT = RobotLayout(
@@ -135,6 +137,26 @@ def test_a_sweep_into_another_fixture_is_refused() -> None:
         match=r"route entry 1 \(P1\): catching the peg takes the (cable|gripper) into C1",
     ):
         plan_routes(RouteProblem(low, (cable("W1", [RouteEntry("P1", "right")]),), ROBOT))
+
+
+def test_the_free_tail_beyond_the_gripper_clears_the_board() -> None:
+    # the shipped harness's W2 began its winding 36 mm from C4's centre, the
+    # span pointing at it: the tail, running on at the gripper's height,
+    # caught in C4's jaws; higher, or pointing away, it clears them
+    clip = BoardFixture("C", "clip", (0.36, -0.28, 0.08), yaw=-0.5, push_force=2.5, length=0.03)
+    pivot = np.array([0.16, -0.17, 0.07])
+    towards = np.array([0.3321, -0.2575, 0.08])
+    hit = tail_collision(towards, pivot, (clip,), 0.003)
+    assert hit is not None and hit.fixture == "C" and hit.by == "cable's free tail"
+    assert hit.needed > 0.08 + 0.008  # over the jaws' top, the cable's radius and a margin
+    assert tail_collision(towards + np.array([0.0, 0.0, 0.02]), pivot, (clip,), 0.003) is None
+    away = 2.0 * pivot - towards
+    away[2] = 0.08
+    assert tail_collision(away, pivot, (clip,), 0.003) is None
+    # 20 mm nearer the pivot, the tail's first 25 mm end short of the clip's reach
+    farther = towards - 0.02 * (towards - pivot) / np.linalg.norm(towards - pivot)
+    farther[2] = 0.08
+    assert tail_collision(farther, pivot, (clip,), 0.003) is None
 
 
 def mirrored(f: BoardFixture) -> BoardFixture:

@@ -82,6 +82,14 @@ FINGER_CLEARANCE = 0.03
 #: Least horizontal distance [m] of the tool centre point from a fixture's body it
 #: passes lower than ``GRIPPER_ABOVE`` over its top (fingers and pads).
 GRIPPER_CLEARANCE = 0.02
+#: Length [m] of the free tail beyond the gripper that runs on at its height,
+#: along the span, before it droops (the pads' 10 mm and about as much
+#: again): it must clear the board like the taut cable. The shipped
+#: harness's W2 began its winding of P2 with the gripper 36 mm from C4's
+#: centre, the tail pointing at it: the tail caught in C4's jaws and took
+#: the pull, 2.7 N, while the span went slack; W1's tail passes C3 44 mm
+#: off, 6 mm over its top, unharmed.
+TAIL_REACH = 0.025
 #: Height [m] over a fixture's top at which the tool centre point passes it (the
 #: harness board's slides pass clips 19 mm over their jaws unharmed).
 GRIPPER_ABOVE = 0.015
@@ -398,6 +406,29 @@ def gripper_collision(
     return None
 
 
+def tail_collision(
+    gripper: FloatArray,
+    pivot: FloatArray,
+    fixtures: tuple[BoardFixture, ...],
+    cable_radius: float,
+    skip: frozenset[str] = frozenset(),
+) -> Collision | None:
+    """The fixture (if any) that the free tail beyond a gripper at ``gripper`` [m] runs into.
+
+    The tail leaves the fingers straight on from the taut span from
+    ``pivot``, at the gripper's height, for :data:`TAIL_REACH`.
+    """
+    out = _flat(gripper - pivot)
+    length = float(np.linalg.norm(out))
+    if length < 1e-9:
+        return None
+    end = gripper + TAIL_REACH * out / length
+    hit = segment_collision(gripper, end, fixtures, cable_radius, skip)
+    if hit is None:
+        return None
+    return Collision(hit.fixture, hit.height, hit.needed, "cable's free tail")
+
+
 def _segment_distance(p: FloatArray, a: FloatArray, b: FloatArray) -> float:
     """Distance [m] from ``p`` to the segment from ``a`` to ``b``."""
     ab = b - a
@@ -414,13 +445,14 @@ class Collision:
         fixture: the fixture's name.
         height: the cable's height [m] where it passes the fixture.
         needed: the least height [m] at which it clears the fixture's top.
-        by: what runs into it: the taut ``cable`` or the ``gripper`` (its fingers).
+        by: what runs into it: the taut ``cable``, the ``gripper`` (its
+            fingers) or the ``cable's free tail`` beyond it.
     """
 
     fixture: str
     height: float
     needed: float
-    by: Literal["cable", "gripper"] = "cable"
+    by: Literal["cable", "gripper", "cable's free tail"] = "cable"
 
 
 def segment_collision(
@@ -923,13 +955,28 @@ class _Planner:
                     collision = Collision(OWN_SPAN, z_grip, float(c[2]) + FINGER_CLEARANCE)
                     what = "winding round the peg"
                     break
-                collision = segment_collision(
-                    pivot, point, self.problem.fixtures, cable.spec.radius, around
-                ) or gripper_collision(point, self.problem.fixtures, around)
+                collision = (
+                    segment_collision(
+                        pivot, point, self.problem.fixtures, cable.spec.radius, around
+                    )
+                    or gripper_collision(point, self.problem.fixtures, around)
+                    or (
+                        tail_collision(
+                            point, pivot, self.problem.fixtures, cable.spec.radius, around
+                        )
+                        if self.has_tail(cable)
+                        else None
+                    )
+                )
                 if collision is not None:
                     what = "winding round the peg"
                     break
         return _PegMotion(moves, catch, wind, z_grip, collision, what, catch_from, rest)
+
+    @staticmethod
+    def has_tail(cable: _Cable) -> bool:
+        """Whether the cable runs on beyond the gripper (more than the fingers hold)."""
+        return cable.spec.length - cable.at > TAIL
 
     def short_of(self, peg: BoardFixture, following: RouteEntry | None) -> float:
         """Angle [rad] by which a winding stops short of pointing at the next entry, a clip.
@@ -1000,6 +1047,8 @@ class _Planner:
                 hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is None:
                     hit = gripper_collision(g, self.problem.fixtures, skip)
+                if hit is None and self.has_tail(cable):
+                    hit = tail_collision(g, pivot, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is not None:
                     return hit
             previous = point
