@@ -207,10 +207,12 @@ def _clip_xml(clip: ClipSpec, design: ClipDesign, options: SimOptions) -> str:
         )
     stand = clip.position[2] + wall_bottom - options.table_height
     if stand > 1e-4:
+        # seen, not felt: a free tail dragged over the board slides under it
+        # (felt, the tails of the shipped harness caught on the stands)
         parts.append(
             f'<geom type="box" pos="0 0 {wall_bottom - 0.5 * stand:.6g}"'
-            f' size="{0.6 * half_len:.6g} {0.6 * outer:.6g} {0.5 * stand:.6g}" {common}'
-            ' rgba="0.3 0.3 0.3 1"/>'
+            f' size="{0.6 * half_len:.6g} {0.6 * outer:.6g} {0.5 * stand:.6g}" contype="0"'
+            ' conaffinity="0" rgba="0.3 0.3 0.3 1"/>'
         )
     return (
         f'<body name="{clip.name}" pos="{_v(clip.position)}" quat="{_v(quat)}">'
