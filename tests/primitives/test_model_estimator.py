@@ -94,3 +94,18 @@ def test_the_followed_wrap_is_the_sum_of_the_turns(start: float, turn: float, se
     assert abs(wrap[2] - (begin + sense * turn)) < 1e-6
     if abs(wrap[2]) > math.radians(10.0):
         assert senses[-1] == math.copysign(1.0, wrap[2])
+
+
+def test_the_followed_wrap_stays_with_the_peg_for_later_steps() -> None:
+    # wound once clockwise, the peg's point keeps the turn along the cable;
+    # a later rotation about it starts from those windings, not from the
+    # path's angle (which reads a small left turn)
+    distance = 0.2
+    est = _estimator(0.3, distance, -1.0)
+    _circle(est, np.linspace(0.3, 0.3 - math.radians(350.0), 400), distance)
+    point = est.graph.points[1]
+    assert point.wrap is not None
+    assert abs(point.wrap - (0.3 - math.radians(350.0))) < 1e-9
+    est.rotation = (Z, 1.0)  # a new rotation, unwinding
+    senses = _circle(est, np.linspace(0.3 - math.radians(350.0), -4.0, 50), distance)
+    assert all(s == -1.0 for s in senses)  # still wound clockwise

@@ -66,3 +66,24 @@ def test_the_path_turning_round_the_peg_gives_its_side() -> None:
     t = leave_point(AXIS, 0.0085, gripper, 1.0)
     direction = (t - gripper) / np.linalg.norm(t - gripper)
     assert wrap_side(AXIS, gripper, direction) == 1.0
+
+
+@given(
+    st.floats(0.1, math.pi - 0.2),
+    st.sampled_from([1.0, -1.0]),
+    st.integers(-2, 2),
+    st.floats(-0.4, 0.4),
+)
+def test_a_wound_peg_takes_its_side_from_the_windings_followed(
+    size: float, sign: float, windings: int, drift: float
+) -> None:
+    # a cable wound round the peg by angle + 2 pi k (the shipped harness's W2:
+    # -359 deg round P2, whose path alone reads a 1 deg left turn): the turn
+    # followed last, off by what a move turned it since, picks the winding
+    angle = sign * size
+    before = AXIS - np.array([0.1, 0.0, 0.0])
+    gripper = AXIS + 0.2 * np.array([math.cos(angle), math.sin(angle), 0.0])
+    turn = angle + 2.0 * math.pi * windings
+    assert turn_side(before, AXIS, gripper, turn + drift) == math.copysign(1.0, turn)
+    # without it, the path's angle alone
+    assert turn_side(before, AXIS, gripper) == math.copysign(1.0, angle)

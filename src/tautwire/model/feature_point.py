@@ -41,6 +41,10 @@ class FeaturePoint:
         kind: What constrains the point (see :data:`FeatureKind`).
         label: Free text: the gripper's arm, a fixture's name, a goal's name.
         covariance: Uncertainty of an estimated position [m^2], if known.  # (3, 3)
+        wrap: The angle [rad] the cable turns round the point, along the cable
+            from its start and right-handed about the world's vertical,
+            windings counted (a peg wound once: about +-2 pi); None where
+            unknown. Followed while a gripper circles the point (primitive I).
     """
 
     position: FloatArray
@@ -49,6 +53,7 @@ class FeaturePoint:
     kind: FeatureKind = "free"
     label: str = ""
     covariance: FloatArray | None = None
+    wrap: float | None = None
 
     def __post_init__(self) -> None:
         self.position = _vector3(self.position, "position")
@@ -77,4 +82,5 @@ class FeaturePoint:
             self.kind,
             self.label,
             None if self.covariance is None else self.covariance.copy(),
+            self.wrap,
         )

@@ -1260,7 +1260,11 @@ class ModelEstimator:
         The angle between the routes in and out only says the turn modulo
         a full turn; summed from its changes (each under half a turn), it
         counts windings (see :meth:`_round_contact`). A new peg or rotation
-        starts from the angle itself.
+        starts from the angle itself, with the windings the point's ``wrap``
+        holds from an earlier rotation; without one, within 10 deg of a
+        reversal (a half turn, whose sign the angle cannot tell) from the
+        one whose sense is the rotation's. The point's ``wrap`` keeps the
+        turn, along the cable, for the primitives after (F's aim).
         """
         geometry = None if c is None else self._wrap_geometry(c)
         if geometry is None or c is None:
@@ -1271,14 +1275,18 @@ class ModelEstimator:
         if self._wrap is None or self._wrap[0] is not point or self._wrap[1] != self._rotations:
             wrap = angle
             assert self.rotation is not None  # a geometry needs one
-            if abs(angle) > math.radians(170.0) and (
+            if point.wrap is not None:  # wound before: its windings count
+                known = point.wrap * orientation
+                wrap = angle + 2.0 * math.pi * round((known - angle) / (2.0 * math.pi))
+            elif abs(angle) > math.radians(170.0) and (
                 math.copysign(1.0, angle) * orientation != self.rotation[1]
             ):
                 wrap = angle - math.copysign(2.0 * math.pi, angle)
             self._wrap = (point, self._rotations, wrap, angle)
-            return
-        step = math.remainder(angle - self._wrap[3], 2.0 * math.pi)
-        self._wrap = (point, self._rotations, self._wrap[2] + step, angle)
+        else:
+            step = math.remainder(angle - self._wrap[3], 2.0 * math.pi)
+            self._wrap = (point, self._rotations, self._wrap[2] + step, angle)
+        point.wrap = self._wrap[2] * orientation  # along the cable, for the primitives after
 
     def _wrap_angle(self, c: int) -> tuple[float, float] | None:
         """(wrap angle [rad], orientation) round the peg at point ``c``: followed, else read now."""

@@ -53,17 +53,29 @@ def axis_offset(axis_point: FloatArray, p_gripper: FloatArray, direction: FloatA
     return float(heading[0] * r[1] - heading[1] * r[0]) / n
 
 
-def turn_side(before: FloatArray, axis_point: FloatArray, p_gripper: FloatArray) -> float:
+def turn_side(
+    before: FloatArray,
+    axis_point: FloatArray,
+    p_gripper: FloatArray,
+    wound: float | None = None,
+) -> float:
     """The wrap side of a peg from the cable's path: where it comes from, the peg, the gripper.
 
     A cable from ``before`` round the peg to the gripper turns towards the
     peg: a left turn (seen from above) wraps it with the axis on the cable's
     left, +1 as :func:`wrap_side`; a right turn -1; 0 for a straight path.
-    Right for wraps under half a turn.
+    The path's angle alone is right for wraps under half a turn; ``wound``,
+    the turn [rad] last followed round the peg from ``before`` to the
+    gripper (windings counted), picks the winding: the turn now is the
+    angle plus the whole turns that bring it nearest ``wound``.
     """
     a = (np.asarray(axis_point, dtype=float) - np.asarray(before, dtype=float))[:2]
     b = (np.asarray(p_gripper, dtype=float) - np.asarray(axis_point, dtype=float))[:2]
     cross = float(a[0] * b[1] - a[1] * b[0])
+    if wound is not None:
+        angle = math.atan2(cross, float(a @ b))
+        turn = angle + 2.0 * math.pi * round((wound - angle) / (2.0 * math.pi))
+        return 0.0 if abs(turn) < 1e-12 else math.copysign(1.0, turn)
     return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
 
 

@@ -185,6 +185,7 @@ class SingleArmClipping(Primitive):
         line; where that line passes within half the radius of the axis, too
         near to tell, the side the model's path turns round the peg,
         :func:`~tautwire.primitives.peg_leave.turn_side`, from the
+        windings the model followed round it and from the
         constrained point before it): the tangent point of the line over the clip
         (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
         axis would put the cable a radius beside the slot.
@@ -206,7 +207,12 @@ class SingleArmClipping(Primitive):
             # the line passes too near the axis to tell the side (1 deg of
             # direction error at 0.3 m is 5 mm): the side the cable's path turns
             before = self._before(ctx)
-            turn = 0.0 if before is None else turn_side(before, c, p_gripper)
+            point = ctx.graph.points[i] if i is not None else None
+            wound = None
+            if point is not None and point.wrap is not None:
+                # followed along the cable from its start: from before to the gripper
+                wound = point.wrap if i is not None and i < est.gripper_index else -point.wrap
+            turn = 0.0 if before is None else turn_side(before, c, p_gripper, wound)
             side = turn if turn != 0.0 else side
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
