@@ -55,9 +55,9 @@ def test_a_winding_past_half_a_turn_keeps_its_sense() -> None:
     angles = np.linspace(0.3, 0.3 - math.radians(349.0), 400)
     senses = _circle(est, angles, distance)
     assert all(s == -1.0 for s in senses[10:])
-    wrap = est._wrap
+    wrap = est.graph.points[1].wrap
     assert wrap is not None
-    assert abs(wrap[2] - angles[-1]) < 1e-9  # the route in runs along +x: the wrap is the angle
+    assert abs(wrap - angles[-1]) < 1e-9  # the route in runs along +x: the wrap is the angle
     # read afresh (a new rotation) at the end, the angle says the other sense
     est.rotation = (Z, -1.0)
     peg = est.round_contact()
@@ -86,14 +86,15 @@ def test_the_followed_wrap_is_the_sum_of_the_turns(start: float, turn: float, se
     est = _estimator(start, distance, sense)
     angles = start + sense * np.linspace(0.0, turn, 300)
     senses = _circle(est, angles, distance)
-    wrap = est._wrap
+    wrap = est.graph.points[1].wrap  # the cable runs from the anchor to the gripper
     assert wrap is not None
     begin = math.remainder(start, 2.0 * math.pi)
     if abs(begin) > math.radians(170.0) and math.copysign(1.0, begin) != sense:
         begin -= math.copysign(2.0 * math.pi, begin)
-    assert abs(wrap[2] - (begin + sense * turn)) < 1e-6
-    if abs(wrap[2]) > math.radians(10.0):
-        assert senses[-1] == math.copysign(1.0, wrap[2])
+    assert abs(wrap - (begin + sense * turn)) < 1e-6
+    assert est.wound(1) == wrap
+    if abs(wrap) > math.radians(10.0):
+        assert senses[-1] == math.copysign(1.0, wrap)
 
 
 def test_the_followed_wrap_stays_with_the_peg_for_later_steps() -> None:

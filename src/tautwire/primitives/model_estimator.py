@@ -52,6 +52,7 @@ from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
 from tautwire.model.vector3 import cross3, norm3
 from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.peg_leave import nearest_turn
 from tautwire.robot import Arm, Observation
 
 FloatArray = NDArray[np.float64]
@@ -314,9 +315,9 @@ class ModelEstimator:
         self.round_fixtures = dict(round_fixtures or {})
         self._rotation: tuple[FloatArray, float] | None = None
         self._rotations = 0  # how many rotations were set (a new path for each)
-        #: The wrap round a circled peg, followed period by period: (the peg's
-        #: point, the rotation's count, the wrap angle [rad], the last
-        #: direction [rad] from the peg to the gripper); None while no peg is circled.
+        #: The peg whose wrap is followed (its point's ``wrap`` holds the turn),
+        #: the rotation's count, the last angle [rad] between the routes in and
+        #: out and the cable's orientation there; None while no peg is circled.
         self._wrap: tuple[FeaturePoint, int, float, float] | None = None
         self.iterations = 0  # contact filter iterations so far
         self.changes: list[int] = []  # iterations at which a new contact was declared
@@ -1209,10 +1210,34 @@ class ModelEstimator:
                 return self.rotation[0], self.rotation[1], 0.0
             return None
         axis, sense = self.rotation
-        wrap = self._wrap_angle(c)
-        if wrap is not None and abs(wrap[0]) > math.radians(10.0):
-            sense = math.copysign(1.0, wrap[0]) * wrap[1]
+        turn = self._turn_along_cable(c)
+        if turn is not None and abs(turn) > math.radians(10.0):
+            sense = math.copysign(1.0, turn)
         return axis, sense, fixture[1]
+
+    def point_before(self, c: int) -> FeaturePoint | None:
+        """The nearest constrained point beyond point ``c``, away from the sensing gripper."""
+        step = -1 if c < self.gripper_index else 1
+        points = self.graph.points
+        return next(
+            (
+                points[i]
+                for i in range(c + step, -1 if step < 0 else len(points), step)
+                if points[i].is_constrained
+            ),
+            None,
+        )
+
+    def wound(self, c: int) -> float | None:
+        """The turn [rad] followed round point ``c``, from :meth:`point_before` to the gripper.
+
+        Windings counted (see :meth:`_follow_wrap`); None where no rotation
+        followed one.
+        """
+        wrap = self.graph.points[c].wrap
+        if wrap is None:
+            return None
+        return wrap if c < self.gripper_index else -wrap
 
     def _wrap_geometry(self, c: int) -> tuple[float, float] | None:
         """The route's turn [rad] round the peg at point ``c``, in (-pi, pi], and its orientation.
@@ -1231,28 +1256,19 @@ class ModelEstimator:
             return None
         axis = self.rotation[0]
         g = self.gripper_index
-        step = -1 if c < g else 1
-        points = self.graph.points
-        before = next(
-            (
-                points[i]
-                for i in range(c + step, -1 if step < 0 else len(points), step)
-                if points[i].is_constrained
-            ),
-            None,
-        )
+        before = self.point_before(c)
         if before is None:
             return None
         peg = fixture[0]
         inward = peg - before.position
-        p_g = self._gripper_positions.get(self.arm, points[g].position)
+        p_g = self._gripper_positions.get(self.arm, self.graph.points[g].position)
         outward = p_g - peg
         inward = inward - axis * float(axis @ inward)
         outward = outward - axis * float(axis @ outward)
         if norm3(inward) < 1e-9 or norm3(outward) < 1e-9:
             return None
         angle = math.atan2(float(axis @ cross3(inward, outward)), float(inward @ outward))
-        return angle, 1.0 if step < 0 else -1.0
+        return angle, 1.0 if c < g else -1.0
 
     def _follow_wrap(self, c: int | None) -> None:
         """Follow the route's turn round a circled peg by this period's change of it.
@@ -1272,31 +1288,34 @@ class ModelEstimator:
             return
         angle, orientation = geometry
         point = self.graph.points[c]
-        if self._wrap is None or self._wrap[0] is not point or self._wrap[1] != self._rotations:
+        followed = self._wrap
+        if (
+            followed is None
+            or followed[0] is not point
+            or followed[1] != self._rotations
+            or point.wrap is None
+        ):
             wrap = angle
             assert self.rotation is not None  # a geometry needs one
             if point.wrap is not None:  # wound before: its windings count
-                known = point.wrap * orientation
-                wrap = angle + 2.0 * math.pi * round((known - angle) / (2.0 * math.pi))
+                wrap = nearest_turn(angle, point.wrap * orientation)
             elif abs(angle) > math.radians(170.0) and (
                 math.copysign(1.0, angle) * orientation != self.rotation[1]
             ):
                 wrap = angle - math.copysign(2.0 * math.pi, angle)
-            self._wrap = (point, self._rotations, wrap, angle)
         else:
-            step = math.remainder(angle - self._wrap[3], 2.0 * math.pi)
-            self._wrap = (point, self._rotations, self._wrap[2] + step, angle)
-        point.wrap = self._wrap[2] * orientation  # along the cable, for the primitives after
+            wrap = point.wrap * orientation + math.remainder(angle - followed[2], 2.0 * math.pi)
+        self._wrap = (point, self._rotations, angle, orientation)
+        point.wrap = wrap * orientation  # along the cable, for the primitives after
 
-    def _wrap_angle(self, c: int) -> tuple[float, float] | None:
-        """(wrap angle [rad], orientation) round the peg at point ``c``: followed, else read now."""
+    def _turn_along_cable(self, c: int) -> float | None:
+        """The turn [rad] round the peg at point ``c`` along the cable: followed, else read now."""
+        followed = self._wrap
+        point = self.graph.points[c]
+        if followed is not None and followed[0] is point and followed[1] == self._rotations:
+            return point.wrap
         geometry = self._wrap_geometry(c)
-        if geometry is None:
-            return None
-        wrap = self._wrap
-        if wrap is not None and wrap[0] is self.graph.points[c] and wrap[1] == self._rotations:
-            return wrap[2], geometry[1]
-        return geometry
+        return None if geometry is None else geometry[0] * geometry[1]
 
     def _on_axis(self, p_g: FloatArray, f: FloatArray) -> FloatArray:
         """The gripper position shifted so that its line passes a round contact's axis."""

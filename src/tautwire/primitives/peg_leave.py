@@ -73,10 +73,14 @@ def turn_side(
     b = (np.asarray(p_gripper, dtype=float) - np.asarray(axis_point, dtype=float))[:2]
     cross = float(a[0] * b[1] - a[1] * b[0])
     if wound is not None:
-        angle = math.atan2(cross, float(a @ b))
-        turn = angle + 2.0 * math.pi * round((wound - angle) / (2.0 * math.pi))
+        turn = nearest_turn(math.atan2(cross, float(a @ b)), wound)
         return 0.0 if abs(turn) < 1e-12 else math.copysign(1.0, turn)
     return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
+
+
+def nearest_turn(angle: float, reference: float) -> float:
+    """``angle`` [rad] plus the whole turns that bring it nearest ``reference`` [rad]."""
+    return angle + 2.0 * math.pi * round((reference - angle) / (2.0 * math.pi))
 
 
 def leave_point(

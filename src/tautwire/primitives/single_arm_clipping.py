@@ -206,32 +206,13 @@ class SingleArmClipping(Primitive):
         if abs(axis_offset(c, p_gripper, state.direction)) < 0.5 * radius:
             # the line passes too near the axis to tell the side (1 deg of
             # direction error at 0.3 m is 5 mm): the side the cable's path turns
-            before = self._before(ctx)
-            point = ctx.graph.points[i] if i is not None else None
-            wound = None
-            if point is not None and point.wrap is not None:
-                # followed along the cable from its start: from before to the gripper
-                wound = point.wrap if i is not None and i < est.gripper_index else -point.wrap
-            turn = 0.0 if before is None else turn_side(before, c, p_gripper, wound)
+            before = None if i is None else est.point_before(i)
+            turn = 0.0
+            if before is not None and i is not None:
+                turn = turn_side(before.position, c, p_gripper, est.wound(i))
             side = turn if turn != 0.0 else side
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
-
-    @staticmethod
-    def _before(ctx: PrimitiveContext) -> np.ndarray | None:
-        """The model's nearest constrained point beyond the contact, away from the gripper."""
-        est = ctx.estimator
-        c = est.contact_index
-        if c is None:
-            return None
-        step = -1 if c < est.gripper_index else 1
-        j = c + step
-        points = ctx.graph.points
-        while 0 <= j < len(points):
-            if points[j].is_constrained:
-                return points[j].position.copy()
-            j += step
-        return None
 
     def _plan_force(self, p_gripper: np.ndarray, tension: float, ctx: PrimitiveContext) -> float:
         """The push tension [N]: three times the push force, unless the bend cannot press enough.

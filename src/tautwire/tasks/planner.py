@@ -960,23 +960,20 @@ class _Planner:
                         pivot, point, self.problem.fixtures, cable.spec.radius, around
                     )
                     or gripper_collision(point, self.problem.fixtures, around)
-                    or (
-                        tail_collision(
-                            point, pivot, self.problem.fixtures, cable.spec.radius, around
-                        )
-                        if self.has_tail(cable)
-                        else None
-                    )
+                    or self.tail_hit(cable, point, pivot, around)
                 )
                 if collision is not None:
                     what = "winding round the peg"
                     break
         return _PegMotion(moves, catch, wind, z_grip, collision, what, catch_from, rest)
 
-    @staticmethod
-    def has_tail(cable: _Cable) -> bool:
-        """Whether the cable runs on beyond the gripper (more than the fingers hold)."""
-        return cable.spec.length - cable.at > TAIL
+    def tail_hit(
+        self, cable: _Cable, gripper: FloatArray, pivot: FloatArray, skip: frozenset[str]
+    ) -> Collision | None:
+        """:func:`tail_collision` where the cable runs on past the gripper (beyond ``TAIL``)."""
+        if cable.spec.length - cable.at <= TAIL:
+            return None
+        return tail_collision(gripper, pivot, self.problem.fixtures, cable.spec.radius, skip)
 
     def short_of(self, peg: BoardFixture, following: RouteEntry | None) -> float:
         """Angle [rad] by which a winding stops short of pointing at the next entry, a clip.
@@ -1047,8 +1044,8 @@ class _Planner:
                 hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is None:
                     hit = gripper_collision(g, self.problem.fixtures, skip)
-                if hit is None and self.has_tail(cable):
-                    hit = tail_collision(g, pivot, self.problem.fixtures, cable.spec.radius, skip)
+                if hit is None:
+                    hit = self.tail_hit(cable, g, pivot, skip)
                 if hit is not None:
                     return hit
             previous = point
