@@ -18,6 +18,7 @@ from tautwire.primitives.clip_sensing import (
     far_rise,
     push_tension,
 )
+from tautwire.primitives.clip_tug import ClipTug, TugReading, tug_angle
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
@@ -54,6 +55,8 @@ ALIGN_TOLERANCE = 0.003
 #: shipped harness's C2: 4.6 mm beside, with the gripper 3 mm off its set
 #: point and the cable 2 mm beside the tool centre point).
 ALIGN_MISS = 0.0007
+#: Time [s] the gripper rests at each end of the tug before the pull is read.
+TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
 EXIT_TIME = 0.2
 
@@ -79,14 +82,19 @@ class SingleArmClipping(Primitive):
     to the seat. The gripper presses on by ``PRESS_EXTRA``, then lifts back
     to the straight line from c through the seat (a clipped cable lies there
     unloaded; an unclipped one rests on the jaws); if the force's line still
-    reaches the seat, the cable is in and the model gets a fixed point at q.
-    If not, it pushes again, deeper, up to ``ATTEMPTS`` times.
+    reaches the seat, it tugs: lifts the gripper a few degrees about the
+    clip's exit and back (:mod:`~tautwire.primitives.clip_tug`). A pull that
+    turns about the clip, not about the far contact, proves the clip holds
+    the cable without trusting where it leaves the fingers; then the model
+    gets a fixed point at q. If the line does not reach the seat, it pushes
+    again, deeper, up to ``ATTEMPTS`` times.
 
     Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
     table (``TABLE_CLEARANCE``; the message gives the planned press against
     the clip's push force), or the cable did not stay in after the last
-    attempt; ``precondition`` if the clip is not between the contact and
-    the gripper or its slot is across the cable, or the cable rises more
+    attempt, or the tug turned the pull about the far contact;
+    ``precondition`` if the clip is not between the contact and the gripper
+    or its slot is across the cable, or the cable rises more
     than :data:`~tautwire.primitives.clip_sensing.MAX_FAR_RISE` from the
     clip to the contact; ``slipped`` if the cable
     goes slack; ``timeout``.
@@ -130,6 +138,10 @@ class SingleArmClipping(Primitive):
         self._slack = SlackWatch(1.0)
         self._exit_offset: LowPass[np.ndarray] = LowPass(EXIT_TIME)
         self._offset = np.zeros(3)
+        self._tug = ClipTug(np.array([1.0, 0.0, 0.0]))  # its plane is set when the push starts
+        self._tug_reading: TugReading | None = None
+        self._reached: float | None = None
+        self._line_at_rest = (0.0, 0.0)  # the force line's height and miss [m] before the tug
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -301,6 +313,8 @@ class SingleArmClipping(Primitive):
         if state.taut:
             self._offset = self._exit_offset.update(obs.time, leaves - me.position)
         height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
+        if self.phase in ("lift", "tug", "back"):
+            self._tug.update(obs.time, wrench.force)
         force = self._base_force
         if self.phase == "align":
             target = self._target(obs, state)
@@ -309,6 +323,7 @@ class SingleArmClipping(Primitive):
                 out = me.position - self.info.position
                 out[2] = 0.0
                 self._out = out / max(float(np.linalg.norm(out)), 1e-9)
+                self._tug = ClipTug(self._out)
                 side = 1.0 if float(out @ self.info.slot) >= 0.0 else -1.0
                 self._exit = self.info.position + side * 0.5 * self.info.length * self.info.slot
                 self._exit[2] += JAW_TOP
@@ -343,17 +358,38 @@ class SingleArmClipping(Primitive):
                     f" presses about {self.press:.1f} N of the {self.info.push_force:.1f} N it"
                     " needs): hold the cable closer to the clip",
                 )
-        else:  # lift back over the clip and feel whether the cable stayed in
+        elif self.phase == "lift":  # back over the clip: feel whether the cable stayed in
             rest = self._angle_rest
             self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, rest)
             target = self._pivot(obs)
             settled = obs.time - self._since > 0.3
             if settled and self.angle <= rest and norm3(me.position - target) < 0.003:
-                if self.sensing.seated or self.attempts >= ATTEMPTS:
+                if self.sensing.seated:
+                    self._tug.mark_rest(me.position)
+                    self._line_at_rest = (self.sensing.height or 0.0, self.sensing.miss or 0.0)
+                    self.phase, self._since, self._reached = "tug", obs.time, None
+                elif self.attempts >= ATTEMPTS:
                     self._verify(ctx)
                 else:  # not in: push again, deeper than the last time
                     self.attempts += 1
                     self.phase, self._deeper = "push", self._pressed_to + PRESS_EXTRA
+        else:  # tug: lift above the line and back (clip_tug.py)
+            rest = self._angle_rest
+            step = 2.0 * PUSH_RATE * ctx.control_period
+            if self.phase == "tug":
+                goal = rest - tug_angle(self.info.push_force, self._base_force)
+                self.angle = max(self.angle - step, goal)
+            else:
+                goal = rest
+                self.angle = min(self.angle + step, goal)
+            target = self._pivot(obs)
+            if self.angle == goal and norm3(me.position - target) < 0.003:
+                self._reached = obs.time if self._reached is None else self._reached
+            if self._reached is not None and obs.time - self._reached > TUG_SETTLE:
+                if self.phase == "back":
+                    self._verify(ctx)
+                else:
+                    self._read_tug(me.position)
         if self._slack.update(obs.time, state.tension, force):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
         q_target = (
@@ -362,11 +398,28 @@ class SingleArmClipping(Primitive):
         desired = with_pose(self._hold, self.arm, Pose(target, q_target))
         return Command(tension_twist(ctx, obs, self.arm, desired, force, state))
 
+    def _read_tug(self, p_gripper: np.ndarray) -> None:
+        """Judge the tug: a pull that turned about the far contact was not held by the clip."""
+        reading = self._tug.reading(p_gripper, self._exit, self._contact)
+        self._tug_reading = reading
+        if reading.distinct and not reading.holds:
+            self.outcome = Outcome.failure(
+                "not_clipped",
+                f"the cable is not held by {self.clip}: {reading.describe()}; at rest the"
+                f" force's line read it {1e3 * self._line_at_rest[0]:.1f} mm above its seat and"
+                f" {1e3 * self._line_at_rest[1]:.1f} mm beside its slot",
+            )
+            return
+        self.phase, self._reached = "back", None
+
     def _verify(self, ctx: PrimitiveContext) -> None:
         verdict = self.sensing.verdict(self.clip)
         if verdict.status != "success":
             self.outcome = verdict
             return
+        if self._tug_reading is not None:
+            held = "held" if self._tug_reading.distinct else "not told apart"
+            verdict = Outcome.success(f"{verdict.detail}; {self._tug_reading.describe()}: {held}")
         # the clip lies on the straight cable from the contact, |q - c| along it
         est = ctx.estimator
         drop_new_points(ctx.graph, self._known)

@@ -1,0 +1,152 @@
+"""Feeling that a clip holds the cable: lift the gripper a little and see what the pull turns about.
+
+The clipping primitives first judge the snap from the line of the measured
+force (:class:`~tautwire.primitives.clip_sensing.ClipHeight`). That line
+passes through where the cable leaves the fingers, which the wrench's line
+of action places only to within several millimetres (a bent cable in the
+pads adds a couple): on a random board F read a cable 7.5 mm beside a slot
+as 1.7 mm beside it. The tug needs no such point. A clipped cable is held
+down at the clip, so lifting the gripper by an angle a about the clip's
+exit turns the pull by a; a cable that only rests on or beside the clip
+lifts off it and turns about its far contact instead, by a r / R (r the
+gripper's distance from the clip, R from the far contact). Only the change
+of the force's direction between two poses enters, so a constant offset of
+the cable in the fingers, the span's weight and a sensor bias cancel.
+Measured on that board (seed 1695658280, clip F3 at r = 104 mm): lifted
+7 mm, the pull turned 1.3 deg, against 3.9 deg about the clip and 1.5 deg
+about the far peg.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from tautwire.primitives.low_pass import LowPass
+
+FloatArray = NDArray[np.float64]
+
+#: Upward pull on a clipped cable the tug may make, as a share of the clip's push force.
+TUG_SHARE = 0.35
+#: Least and largest angle [rad] by which the tug lifts the gripper about the clip.
+MIN_TUG = math.radians(3.0)
+MAX_TUG = math.radians(10.0)
+#: Time constant [s] of the low-pass on the pull's direction.
+PULL_TIME = 0.1
+#: Least difference [rad] between the turns about the clip and about the far
+#: contact for the tug to tell them apart (about ten times the low-passed
+#: direction's noise at 0.05 N on 3 N).
+DISTINCT = math.radians(0.8)
+
+
+def tug_angle(push_force: float, tension: float) -> float:
+    """The angle [rad] to lift the gripper about the clip's exit.
+
+    Lifted by a, a held cable pulls up on the clip with about T sin(a):
+    at most ``TUG_SHARE`` of the push force that holds it in, within
+    [``MIN_TUG``, ``MAX_TUG``].
+
+    Args:
+        push_force: The clip's push force [N].
+        tension: The tension [N] kept during the tug.
+    """
+    s = TUG_SHARE * push_force / max(tension, 1e-6)
+    return min(max(math.asin(min(s, 1.0)), MIN_TUG), MAX_TUG)
+
+
+def elevation(v: FloatArray, out: FloatArray) -> float:
+    """Angle [rad] of ``v`` above the horizontal, in the vertical plane of ``out``.
+
+    Args:
+        v: A direction from the gripper towards the cable.  # (3,)
+        out: Unit horizontal direction from the clip to the gripper.  # (3,)
+    """
+    return math.atan2(float(v[2]), -float(v[0] * out[0] + v[1] * out[1]))
+
+
+@dataclass(frozen=True)
+class TugReading:
+    """How far the pull turned when the gripper was lifted, against the two hypotheses [rad].
+
+    Attributes:
+        turned: The measured turn of the pull (downwards positive).
+        held: The turn if the clip holds the cable (about its exit).
+        loose: The turn if it does not (about the far contact).
+    """
+
+    turned: float
+    held: float
+    loose: float
+
+    @property
+    def distinct(self) -> bool:
+        """Whether the two hypotheses differ by at least ``DISTINCT``."""
+        return self.held - self.loose >= DISTINCT
+
+    @property
+    def holds(self) -> bool:
+        """Whether the pull turned about the clip: nearer ``held`` than ``loose``."""
+        return self.turned >= 0.5 * (self.held + self.loose)
+
+    def describe(self) -> str:
+        """One line: the measured turn and the two expected ones, in degrees."""
+        return (
+            f"lifted, the pull turned {math.degrees(self.turned):.1f} deg (about the clip "
+            f"{math.degrees(self.held):.1f} deg, about the far contact "
+            f"{math.degrees(self.loose):.1f} deg)"
+        )
+
+
+class ClipTug:
+    """The pull's direction at rest and lifted, and the reading of the two.
+
+    Args:
+        out: Unit horizontal direction from the clip to the gripper.  # (3,)
+    """
+
+    def __init__(self, out: FloatArray) -> None:
+        self.out = np.asarray(out, dtype=float)
+        self._pull: LowPass[np.ndarray] = LowPass(PULL_TIME)
+        self._rest: tuple[FloatArray, float] | None = None
+
+    def update(self, time: float, force: FloatArray) -> None:
+        """Add the force [N] the cable exerts on the gripper, measured at ``time`` [s]."""
+        f = np.asarray(force, dtype=float)
+        n = float(np.linalg.norm(f))
+        if math.isfinite(n) and n > 1e-6:
+            self._pull.update(time, f / n)
+
+    @property
+    def has_rest(self) -> bool:
+        """Whether the rest pose has been marked."""
+        return self._rest is not None
+
+    def mark_rest(self, p_gripper: FloatArray) -> None:
+        """Keep the gripper's position [m] and the pull's elevation now, at rest."""
+        if self._pull.value is not None:
+            self._rest = (np.array(p_gripper, dtype=float), elevation(self._pull.value, self.out))
+
+    def reading(self, p_gripper: FloatArray, exit_point: FloatArray, far: FloatArray) -> TugReading:
+        """The turn of the pull from rest to now, with the gripper lifted to ``p_gripper`` [m].
+
+        Args:
+            p_gripper: The gripper's position now [m].  # (3,)
+            exit_point: The clip's exit on the gripper's side [m].  # (3,)
+            far: Where the cable leaves its far contact [m].  # (3,)
+
+        Raises:
+            RuntimeError: no rest pose was marked.
+        """
+        if self._rest is None or self._pull.value is None:
+            raise RuntimeError("mark the rest pose before reading the tug")
+        p0, e0 = self._rest
+        p1 = np.asarray(p_gripper, dtype=float)
+
+        def turn(pivot: FloatArray) -> float:
+            return elevation(pivot - p0, self.out) - elevation(pivot - p1, self.out)
+
+        turned = e0 - elevation(self._pull.value, self.out)
+        return TugReading(turned, turn(np.asarray(exit_point)), turn(np.asarray(far)))
