@@ -20,7 +20,8 @@ from tautwire.experiments.trial_scenes import (
     pair_route_length,
     trial_scene,
 )
-from tautwire.primitives.single_arm_clipping import JAW_TOP, TABLE_CLEARANCE
+from tautwire.primitives.clip_sensing import JAW_TOP
+from tautwire.primitives.single_arm_clipping import TABLE_CLEARANCE
 from tautwire.scenario.models import CLIP_LENGTH
 from tautwire.sim.build import world_spec
 from tautwire.sim.mjcf import scene_model

@@ -39,8 +39,8 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.experiments.robustness_scene import PAD_EXIT, SceneDraws, anchor_route_length
 from tautwire.experiments.trial import LETTERS, TrialResult, TrialSpec
 from tautwire.model.quaternion import multiply
-from tautwire.primitives.clip_sensing import PivotPress
-from tautwire.primitives.single_arm_clipping import JAW_TOP, MAX_ANGLE, TABLE_CLEARANCE
+from tautwire.primitives.clip_sensing import JAW_TOP, PivotPress
+from tautwire.primitives.single_arm_clipping import MAX_ANGLE, TABLE_CLEARANCE
 from tautwire.scenario import Scenario
 from tautwire.scenario.loader import scenario_from_data
 from tautwire.scenario.models import CLIP_LENGTH

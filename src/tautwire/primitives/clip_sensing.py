@@ -22,6 +22,9 @@ from tautwire.primitives.outcome import Outcome
 
 FloatArray = NDArray[np.float64]
 
+#: Height [m] above the seat of the jaws' top: where a cable pressed over a
+#: clip bends, the pivot of a held one.
+JAW_TOP = 0.008
 #: The cable counts as seated within this height [m] above the seat ...
 SEATED = 0.004
 #: ... no further than this [m] below it (a line that passes lower ran beside

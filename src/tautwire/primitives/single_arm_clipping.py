@@ -12,6 +12,7 @@ from tautwire.estimation.force_line import line_point
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import (
+    JAW_TOP,
     MAX_FAR_RISE,
     ClipHeight,
     PivotPress,
@@ -40,8 +41,6 @@ PRESS_EXTRA = 0.05
 ATTEMPTS = 3
 #: Steepest angle [rad] of the cable below the clip before giving up.
 MAX_ANGLE = math.radians(60.0)
-#: Height [m] above the seat of the pivot: about the jaws' top.
-JAW_TOP = 0.008
 #: Lowest height [m] above the table the gripper's tool centre point may go
 #: (its finger pads reach 8 mm below it).
 TABLE_CLEARANCE = 0.02

@@ -48,11 +48,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import TautwireError
-from tautwire.primitives.clip_sensing import PRESS_MARGIN, PivotPress, push_tension
+from tautwire.primitives.clip_sensing import JAW_TOP, PRESS_MARGIN, PivotPress, push_tension
 from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
 from tautwire.primitives.single_arm_clipping import (
     ABOVE,
-    JAW_TOP,
     MAX_ANGLE,
     MAX_SLOT_ANGLE,
     TABLE_CLEARANCE,
