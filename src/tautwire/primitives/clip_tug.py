@@ -37,7 +37,7 @@ FloatArray = NDArray[np.float64]
 TUG_SHARE = 0.1
 #: Least and largest angle [rad] by which the tug lifts the gripper about the clip.
 MIN_TUG = math.radians(3.0)
-MAX_TUG = math.radians(6.0)
+MAX_TUG = math.radians(4.0)
 #: Time constant [s] of the low-pass on the pull's direction.
 PULL_TIME = 0.1
 #: Least difference [rad] between the turns about the clip and about the far
@@ -133,21 +133,13 @@ class ClipTug:
         if self._pull.value is not None:
             self._rest = (np.array(p_gripper, dtype=float), elevation(self._pull.value, self.out))
 
-    def reading(
-        self,
-        p_gripper: FloatArray,
-        exit_point: FloatArray,
-        far: FloatArray,
-        far_now: FloatArray | None = None,
-    ) -> TugReading:
+    def reading(self, p_gripper: FloatArray, exit_point: FloatArray, far: FloatArray) -> TugReading:
         """The turn of the pull from rest to now, with the gripper lifted to ``p_gripper`` [m].
 
         Args:
             p_gripper: The gripper's position now [m].  # (3,)
             exit_point: The clip's exit on the gripper's side [m].  # (3,)
-            far: Where the cable leaves its far contact, at rest [m].  # (3,)
-            far_now: Where it leaves it now, if that moved with the tug (the
-                other gripper of a parallel clip); ``far`` if None.  # (3,)
+            far: Where the cable leaves its far contact [m].  # (3,)
 
         Raises:
             RuntimeError: no rest pose was marked.
@@ -157,11 +149,8 @@ class ClipTug:
         p0, e0 = self._rest
         p1 = np.asarray(p_gripper, dtype=float)
 
-        def turn(before: FloatArray, after: FloatArray) -> float:
-            return elevation(before - p0, self.out) - elevation(after - p1, self.out)
+        def turn(pivot: FloatArray) -> float:
+            return elevation(pivot - p0, self.out) - elevation(pivot - p1, self.out)
 
-        x = np.asarray(exit_point, dtype=float)
-        c0 = np.asarray(far, dtype=float)
-        c1 = c0 if far_now is None else np.asarray(far_now, dtype=float)
         turned = e0 - elevation(self._pull.value, self.out)
-        return TugReading(turned, turn(x, x), turn(c0, c1))
+        return TugReading(turned, turn(np.asarray(exit_point)), turn(np.asarray(far)))

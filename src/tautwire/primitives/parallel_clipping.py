@@ -11,15 +11,14 @@ from tautwire.estimation.force_line import line_point
 from tautwire.model.quaternion import multiply, orientation_along, rotate
 from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose
-from tautwire.primitives.clip_sensing import JAW_TOP, ClipHeight, push_tension
-from tautwire.primitives.clip_tug import ClipTug, TugReading, tug_angle
+from tautwire.primitives.clip_sensing import ClipHeight, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.parallel_tension import held_between_grippers
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
-from tautwire.robot import Arm, Command, Observation
+from tautwire.robot import Command, Observation
 
 #: Height [m] above the seat at which the cable is brought over the clip.
 ABOVE = 0.015
@@ -33,8 +32,6 @@ TABLE_CLEARANCE = 0.015
 HALF_TURN_Z = np.array([0.0, 0.0, 0.0, 1.0])
 #: Largest angle [rad] by which the set point of the line between the grippers leads it.
 LEAD = math.radians(6.0)
-#: Time [s] the pair rests at each end of the tug before the pull is read.
-TUG_SETTLE = 0.4
 #: The push begins once the line between the grippers is within this angle [rad] of the slot.
 SLOT_TOLERANCE = math.radians(3.0)
 
@@ -66,20 +63,15 @@ class ParallelClipping(Primitive):
     the seat's height, where a clipped cable lies straight in the seat,
     unloaded (higher, the tension would pull up on a weak clip: 2 f sin of
     the slope), and an unclipped one still rests on the jaws; if the force
-    line reaches the seat, both grippers lift a little more and come back
-    (a tug, :mod:`~tautwire.primitives.clip_tug`): a held cable's pull turns
-    about the clip, a loose one's stays along the line between the
-    grippers. If the tug turned it about the clip and the line still
-    reaches the seat after it, the cable is in, and the model gets a fixed
-    point at the clip. Either tool axis of a gripper may run along the cable: one
+    line reaches the seat, the cable is in, and the model gets a fixed point
+    at the clip. Either tool axis of a gripper may run along the cable: one
     whose x points from the right gripper towards the left is controlled
     through its tool frame turned half about z, so no gripper turns by more
     than a quarter (a half turn would wrap the cable round a fingertip).
 
     Failure: ``not_clipped`` if no snap is felt down to the steepest bend or
-    the table, or the cable came out when lifted or was not held in the tug
-    (the paper's one clipping failure: grippers too far apart for a steep
-    enough bend);
+    the table, or the cable came out when lifted (the paper's one clipping
+    failure: grippers too far apart for a steep enough bend);
     ``precondition`` if the cable is not held by both grippers; ``slipped``;
     ``timeout``.
 
@@ -91,7 +83,7 @@ class ParallelClipping(Primitive):
     name = "parallel_clipping"
     letter = "C"
 
-    def __init__(self, clip: str, timeout: float = 30.0) -> None:
+    def __init__(self, clip: str, timeout: float = 25.0) -> None:
         super().__init__(timeout)
         self.clip = clip
         self.phase = "align"
@@ -104,13 +96,6 @@ class ParallelClipping(Primitive):
         self.phase = "align"
         self.drop = 0.0
         self._slack = SlackWatch(1.0)
-        self._tug = ClipTug(np.array([1.0, 0.0, 0.0]))  # its plane is set when the tug starts
-        self._tug_reading: TugReading | None = None
-        self._tug_height = 0.0
-        self._tug_rest_other = np.zeros(3)
-        self._exit = np.zeros(3)
-        self._reached: float | None = None
-        self._at_rest = Outcome()  # the force line's verdict at rest, before the tug
         info = ctx.clips.get(self.clip)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
@@ -204,32 +189,11 @@ class ParallelClipping(Primitive):
                     f" (cable {1e3 * (height or 0.0):.1f} mm above its seat): hold the cable"
                     " with the grippers closer together or tension it more",
                 )
-        elif self.phase == "lift":  # to the seat's height: feel whether the cable stayed in
+        else:  # lift to the seat's height and feel whether the cable stayed in
             self.drop = max(self.drop - 2.0 * PUSH_SPEED * ctx.control_period, ABOVE)
             reached = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
             if self.drop <= ABOVE and reached and obs.time - self._since > 0.3:
-                if self.sensing.seated:
-                    self._start_tug(obs, ctx)
-                else:
-                    self._verify(ctx, sensor.position)
-        else:  # tug: lift the pair above the seat's height and back (clip_tug.py)
-            step = 2.0 * PUSH_SPEED * ctx.control_period
-            if self.phase == "tug":
-                goal = ABOVE - self._tug_height
-                self.drop = max(self.drop - step, goal)
-            else:
-                goal = ABOVE
-                self.drop = min(self.drop + step, goal)
-            reached = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
-            if self.drop == goal and reached:
-                self._reached = obs.time if self._reached is None else self._reached
-            if self._reached is not None and obs.time - self._reached > TUG_SETTLE:
-                if self.phase == "back":
-                    self._verify(ctx, sensor.position)
-                else:
-                    self._read_tug(obs, ctx)
-        if self.phase in ("lift", "tug", "back"):
-            self._tug.update(obs.time, wrench.force)
+                self._verify(ctx, sensor.position)
         if self._slack.update(obs.time, state.tension, force):
             self.outcome = Outcome.failure("slipped", "the cable went slack while clipping")
         return Command(
@@ -242,55 +206,11 @@ class ParallelClipping(Primitive):
             )
         )
 
-    def _start_tug(self, obs: Observation, ctx: PrimitiveContext) -> None:
-        """Mark the rest pose and plan the tug's height [m] for the pair."""
-        arm = ctx.estimator.arm
-        other_arm: Arm = "right" if arm == "left" else "left"
-        me, other = obs.gripper(arm).position, obs.gripper(other_arm).position
-        out = me - self.info.position
-        out[2] = 0.0
-        out /= max(float(np.linalg.norm(out)), 1e-9)
-        side = 1.0 if float(out @ self.info.slot) >= 0.0 else -1.0
-        self._exit = self.info.position + side * 0.5 * self.info.length * self.info.slot
-        self._exit[2] += JAW_TOP
-        self._tug = ClipTug(out)
-        # both sides pull up on a held cable: 2 T sin(a) within the tug's share
-        half = 0.5 * norm3(me - other)
-        self._tug_height = half * math.tan(tug_angle(0.5 * self.info.push_force, self._base_force))
-        self._tug_rest_other = other.copy()
-        self._tug.mark_rest(me)
-        self._at_rest = self.sensing.verdict(self.clip)
-        self.phase, self._reached = "tug", None
-
-    def _read_tug(self, obs: Observation, ctx: PrimitiveContext) -> None:
-        """Judge the tug: a pull that did not turn about the clip was not held by it."""
-        arm = ctx.estimator.arm
-        other_arm: Arm = "right" if arm == "left" else "left"
-        reading = self._tug.reading(
-            obs.gripper(arm).position,
-            self._exit,
-            self._tug_rest_other,
-            obs.gripper(other_arm).position,
-        )
-        self._tug_reading = reading
-        if reading.distinct and not reading.holds:
-            self.outcome = Outcome.failure(
-                "not_clipped",
-                f"the cable is not held by {self.clip}: {reading.describe()}; at rest the"
-                f" force's line read it {self._at_rest.detail}",
-            )
-            return
-        self.phase, self._reached = "back", None
-
     def _verify(self, ctx: PrimitiveContext, p_sensor: np.ndarray) -> None:
-        """The verdict: the force's line at the seat's height (after a tug), and the tug."""
         verdict = self.sensing.verdict(self.clip)
         if verdict.status != "success":
             self.outcome = verdict
             return
-        if self._tug_reading is not None:
-            held = "held" if self._tug_reading.distinct else "not told apart"
-            verdict = Outcome.success(f"{verdict.detail}; {self._tug_reading.describe()}: {held}")
         # the clip lies on the straight cable from the sensing gripper, towards the other
         est = ctx.estimator
         drop_new_points(ctx.graph, self._known)
