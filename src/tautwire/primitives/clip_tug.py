@@ -12,9 +12,9 @@ lifts off it and turns about its far contact instead, by a r / R (r the
 gripper's distance from the clip, R from the far contact). Only the change
 of the force's direction between two poses enters, so a constant offset of
 the cable in the fingers, the span's weight and a sensor bias cancel.
-Measured on that board (seed 1695658280, clip F3 at r = 104 mm): lifted
-7 mm, the pull turned 1.3 deg, against 3.9 deg about the clip and 1.5 deg
-about the far peg.
+Measured on that board (seed 1695658280, clip F3, the gripper 104 mm from
+it): lifted by 4 deg, the pull turned 1.4 deg, against 5.1 deg about the
+clip and 1.8 deg about the far peg.
 """
 
 from __future__ import annotations
@@ -31,9 +31,10 @@ FloatArray = NDArray[np.float64]
 
 #: Upward pull on a clipped cable the tug may make, as a share of the clip's
 #: push force. A cable caught in the jaws' throat, at their narrowest gap,
-#: comes out at a small fraction of it: at 0.35 (0.4-0.6 N) Table I F (seed
-#: 0, trials 0-39) lost 6 of 20 clips that the simulator had confirmed, 5
-#: pulled out of the throat, and one crept out after the tug.
+#: comes out at a small fraction of it: at 0.35 (0.4-0.6 N, up to 10 deg)
+#: Table I F (seed 0, trials 0-39) lost 6 of 20 clips that the simulator
+#: had confirmed (5 pulled out of the throat, 1 read out by the line), and
+#: one cable crept out after the tug had read it held.
 TUG_SHARE = 0.1
 #: Least and largest angle [rad] by which the tug lifts the gripper about the clip.
 MIN_TUG = math.radians(3.0)
