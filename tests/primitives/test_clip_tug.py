@@ -54,27 +54,21 @@ geometry = {
 }
 
 
-@settings(max_examples=200, deadline=None)
-@given(**geometry)
-def test_a_held_cable_reads_held_whatever_its_offset_in_the_fingers(
-    yaw: float, r: float, far: float, lift: float, offset: tuple[float, float, float]
+@settings(max_examples=400, deadline=None)
+@given(held=st.booleans(), **geometry)
+def test_the_tug_tells_a_held_cable_from_a_loose_one_whatever_its_offset_in_the_fingers(
+    held: bool, yaw: float, r: float, far: float, lift: float, offset: tuple[float, float, float]
 ) -> None:
-    reading = _read("clip", "clip", np.array(offset), yaw=yaw, r=r, far=far, lift=lift)
+    pivot = "clip" if held else "far"
+    reading = _read(pivot, pivot, np.array(offset), yaw=yaw, r=r, far=far, lift=lift)
+    assert reading.holds == held, reading.describe()
+    if not held:
+        assert reading.loose == pytest.approx(lift * r / (r + far), rel=0.1)
+        return
     if lift * far / (r + far) > 1.5 * DISTINCT:  # else F keeps the line's verdict
         assert reading.distinct
-    assert reading.holds, reading.describe()
-    # about the point the cable leaves the fingers: up to 10 mm nearer or farther than r
+    # about the point the cable leaves the fingers: up to 17 mm nearer or farther than r
     assert lift * r / (r + 0.018) <= reading.turned <= lift * r / (r - 0.018)
-
-
-@settings(max_examples=200, deadline=None)
-@given(**geometry)
-def test_a_loose_cable_reads_loose_whatever_its_offset_in_the_fingers(
-    yaw: float, r: float, far: float, lift: float, offset: tuple[float, float, float]
-) -> None:
-    reading = _read("far", "far", np.array(offset), yaw=yaw, r=r, far=far, lift=lift)
-    assert not reading.holds, reading.describe()
-    assert reading.loose == pytest.approx(lift * r / (r + far), rel=0.1)
 
 
 def test_the_reading_needs_a_rest_pose() -> None:
