@@ -124,11 +124,6 @@ class ClipTug:
         if math.isfinite(n) and n > 1e-6:
             self._pull.update(time, f / n)
 
-    @property
-    def has_rest(self) -> bool:
-        """Whether the rest pose has been marked."""
-        return self._rest is not None
-
     def mark_rest(self, p_gripper: FloatArray) -> None:
         """Keep the gripper's position [m] and the pull's elevation now, at rest."""
         if self._pull.value is not None:

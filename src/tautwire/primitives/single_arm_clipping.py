@@ -54,7 +54,7 @@ ALIGN_TOLERANCE = 0.003
 #: shipped harness's C2: 4.6 mm beside, with the gripper 3 mm off its set
 #: point and the cable 2 mm beside the tool centre point).
 ALIGN_MISS = 0.0007
-#: Time [s] the gripper rests at each end of the tug before the pull is read.
+#: Time [s] the gripper rests lifted in the tug before the pull is read.
 TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
 EXIT_TIME = 0.2
@@ -141,7 +141,7 @@ class SingleArmClipping(Primitive):
         self._tug = ClipTug(np.array([1.0, 0.0, 0.0]))  # its plane is set when the push starts
         self._tug_reading: TugReading | None = None
         self._reached: float | None = None
-        self._at_rest = Outcome()  # the force line's verdict at rest, before the tug
+        self._line_at_rest = ""  # the force line's verdict at rest, before the tug
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -370,7 +370,7 @@ class SingleArmClipping(Primitive):
                     self._verify(ctx)  # tugged, and pressed home again
                 elif self.sensing.seated:
                     self._tug.mark_rest(me.position)
-                    self._at_rest = self.sensing.verdict(self.clip)
+                    self._line_at_rest = self.sensing.verdict(self.clip).detail
                     self.phase, self._reached = "tug", None
                 elif self.attempts >= ATTEMPTS:
                     self._verify(ctx)
@@ -402,7 +402,7 @@ class SingleArmClipping(Primitive):
             self.outcome = Outcome.failure(
                 "not_clipped",
                 f"the cable is not held by {self.clip}: {reading.describe()}; at rest the"
-                f" force's line read it {self._at_rest.detail}",
+                f" force's line read it {self._line_at_rest}",
             )
             return
         # held: press it home again (the tug can draw a cable in the jaws'
@@ -420,12 +420,12 @@ class SingleArmClipping(Primitive):
         axes at 4.3 mm, then above them), so it is pressed home again first.
         """
         verdict = self.sensing.verdict(self.clip)
-        if self._tug_reading is not None and verdict.status == "success":
-            held = "held" if self._tug_reading.distinct else "not told apart"
-            verdict = Outcome.success(f"{verdict.detail}; {self._tug_reading.describe()}: {held}")
         if verdict.status != "success":
             self.outcome = verdict
             return
+        if self._tug_reading is not None:
+            held = "held" if self._tug_reading.distinct else "not told apart"
+            verdict = Outcome.success(f"{verdict.detail}; {self._tug_reading.describe()}: {held}")
         # the clip lies on the straight cable from the contact, |q - c| along it
         est = ctx.estimator
         drop_new_points(ctx.graph, self._known)
