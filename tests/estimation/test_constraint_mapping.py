@@ -44,6 +44,24 @@ def test_free_ends_hang_under_gravity() -> None:
     assert P[4][2] == pytest.approx(0.25)
 
 
+def test_a_graph_that_knows_its_board_rests_its_hanging_ends_on_it() -> None:
+    g = five_point_graph([0.1, 0.15, 0.25, 0.2])
+    g.rest_height = 0.0025  # the board at z = 0, a 2.5 mm cable
+    p_right, p_left = np.array([0.3, -0.2, 0.12]), np.array([0.4, 0.15, 0.05])
+    update_by_constraints(g, {1: p_right, 3: p_left})
+    assert g.points[0].position == pytest.approx([0.3, -0.2, 0.02])  # 0.1 m below: above it
+    assert g.points[4].position == pytest.approx([0.4, 0.15, 0.0025])  # would be 0.15 below it
+    assert g.copy().rest_height == 0.0025
+    # an explicit height wins over the graph's
+    assert map_constraints(g, {1: p_right, 3: p_left}, board_height=0.01)[4][2] == 0.01
+
+
+def test_a_rest_height_must_be_finite() -> None:
+    g = five_point_graph([0.1, 0.15, 0.25, 0.2])
+    with pytest.raises(InvalidArgumentError, match="rest_height"):
+        PathGraph(g.points, g.edges, 0.03, rest_height=float("nan"))
+
+
 def test_update_in_place_refreshes_masses_and_orientation() -> None:
     g = five_point_graph([0.1, 0.15, 0.25, 0.2])
     update_by_constraints(g, {1: [0.0, 0.0, 0.3], 3: [0.0, 0.4, 0.3]})

@@ -12,7 +12,8 @@ them onto the whole path graph:
 
 - points beyond the outermost constrained points are free ends that hang
   under gravity: straight down from the last constrained point by their
-  cable length (resting on the board, when its height is given).
+  cable length, resting on the board when its height is given (or the
+  graph knows it: :attr:`PathGraph.rest_height`).
 """
 
 from __future__ import annotations
@@ -78,7 +79,8 @@ def map_constraints(
     Args:
         graph: The current model (its edge lengths are used).
         constraints: Position [m] of each constrained point, by index.
-        board_height: z [m] of the board that hanging ends rest on, if known.
+        board_height: z [m] that hanging ends rest on (the board's surface
+            plus the cable's radius); default the graph's ``rest_height``.
 
     Returns:
         New positions [m].  # (N, 3)
@@ -93,6 +95,8 @@ def map_constraints(
         P[i] = P_c[0] + down * (s[idx[0]] - s[i])
     for i in range(idx[-1] + 1, len(graph)):  # and after the last one
         P[i] = P_c[-1] + down * (s[i] - s[idx[-1]])
+    if board_height is None:
+        board_height = graph.rest_height
     if board_height is not None:
         P[:, 2] = np.maximum(P[:, 2], board_height)
     out: FloatArray = P

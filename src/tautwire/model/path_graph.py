@@ -29,6 +29,10 @@ class PathGraph:
         points: The feature points, in order along the cable.
         edges: One edge between each pair of neighbours (len(points) - 1).
         mass_per_length: rho [kg/m].
+        rest_height: Height [m] at which the cable's centre line rests on the
+            board (the board's surface plus the cable's radius); a free end
+            that hangs down lies there (:mod:`~tautwire.estimation.constraint_mapping`).
+            None: no board under the cable is known.
     """
 
     def __init__(
@@ -36,6 +40,7 @@ class PathGraph:
         points: Sequence[FeaturePoint],
         edges: Sequence[Edge],
         mass_per_length: float,
+        rest_height: float | None = None,
     ) -> None:
         if len(points) < 2:
             raise InvalidArgumentError(
@@ -48,6 +53,9 @@ class PathGraph:
             )
         if not np.isfinite(mass_per_length) or mass_per_length < 0.0:
             raise InvalidArgumentError(f"mass_per_length must be >= 0 kg/m, got {mass_per_length}")
+        if rest_height is not None and not np.isfinite(rest_height):
+            raise InvalidArgumentError(f"rest_height must be finite or None, got {rest_height}")
+        self.rest_height = None if rest_height is None else float(rest_height)
         self.points: list[FeaturePoint] = list(points)
         self.edges: list[Edge] = list(edges)
         self.mass_per_length = float(mass_per_length)
@@ -256,7 +264,9 @@ class PathGraph:
     def copy(self) -> PathGraph:
         """A deep copy."""
         edges = [Edge(e.length, e.sag, e.tension, e.stiffness) for e in self.edges]
-        return PathGraph([pt.copy() for pt in self.points], edges, self.mass_per_length)
+        return PathGraph(
+            [pt.copy() for pt in self.points], edges, self.mass_per_length, self.rest_height
+        )
 
     def __repr__(self) -> str:
         kinds = ", ".join(

@@ -50,6 +50,11 @@ def fixture_point(scenario: Scenario, name: str, height: float | None = None) ->
     return p
 
 
+#: Height [m] of the board's surface: the world's plane z = 0, which the
+#: primitives keep their clearances from (F's, C's ``TABLE_CLEARANCE``).
+BOARD_SURFACE = 0.0
+
+
 def initial_graph(scenario: Scenario, cable: CableSpec) -> PathGraph:
     """The path graph of ``cable`` as the board design has it.
 
@@ -106,6 +111,11 @@ def initial_graph(scenario: Scenario, cable: CableSpec) -> PathGraph:
     graph = PathGraph.from_positions(
         np.array(points), cable.mass_per_length, lengths=lengths, kinds=kinds, labels=labels
     )
+    # a hanging end lies on the board, not below it
+    graph.rest_height = BOARD_SURFACE + cable.radius
+    rest = graph.positions
+    rest[:, 2] = np.maximum(rest[:, 2], graph.rest_height)
+    graph.set_positions(rest)
     for e in graph.edges:
         e.stiffness = cable.stiffness * cable.length / e.length if e.length > 0 else cable.stiffness
     return graph
