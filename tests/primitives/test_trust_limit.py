@@ -37,3 +37,27 @@ def test_a_peg_keeps_its_own_fraction_of_its_wider_tolerance() -> None:
     est._track(0)
     tolerance = CONTACT_TOLERANCE + 0.0085 - 0.003
     assert est.trust_limit() == pytest.approx(min(est.trusted_std, TRUST_FRACTION * tolerance))
+
+
+def test_a_design_fixture_keeps_its_design_until_its_estimate_is_trusted() -> None:
+    # the shipped harness's A2: tensioning's nearly parallel lines met 8-23 mm
+    # along the cable at a std of several mm; written into the model, that
+    # estimate became the model's anchor (its largest horizontal error)
+    from tests.primitives.spring_robot import SpringCableRobot
+
+    ctx = context()
+    est = ctx.estimator
+    est._track(0)
+    obs = SpringCableRobot(CONTACT, np.array([0.4, 0.0, 0.1]), 200.0, seed=0).observe()
+    off = CONTACT + np.array([0.009, 0.0, 0.0])
+    est.contact_filter.start(off, 0.004**2 * np.eye(3))
+    est._update_graph(obs, 1, 0)
+    estimate = est.contact_estimate()
+    assert estimate is not None and not estimate.trusted
+    assert ctx.graph.points[0].position == pytest.approx(CONTACT, abs=1e-12)
+    assert est.contact_position() == pytest.approx(CONTACT, abs=1e-12)
+    # trusted, the estimate is the model's point
+    est.contact_filter.start(off, 0.0005**2 * np.eye(3))
+    est._update_graph(obs, 1, 0)
+    assert est.contact_estimate().trusted  # type: ignore[union-attr]
+    assert ctx.graph.points[0].position == pytest.approx(off, abs=1e-12)
