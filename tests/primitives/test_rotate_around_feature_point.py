@@ -126,13 +126,31 @@ def test_a_pegs_span_turns_with_its_tangent(sense: float) -> None:
         primitive._track_angle(p, centre, bend)
     expected = span_angle(1.5, 0.05) - span_angle(0.0, 0.30)
     assert primitive.turned == pytest.approx(expected, abs=1e-9)
-    # a jump of the estimate between periods adds no turn of the gripper's,
-    # only the change of the bend at the new distance
+    # a jump of the estimate between periods turns a still gripper's span by
+    # nothing: neither the gripper's angle nor the bend counts it
     before = primitive.turned
     p = centre + 0.05 * np.array([math.cos(1.5), math.sin(1.5), 0.0])
     jumped = centre + np.array([0.01, -0.01, 0.0])
     primitive._track_angle(p, jumped, bend)
     primitive._track_angle(p, jumped, bend)
-    new_distance = float(np.linalg.norm((p - jumped)[:2]))
-    bend_change = sense * (math.asin(radius / new_distance) - math.asin(radius / 0.05))
-    assert primitive.turned == pytest.approx(before + bend_change, abs=1e-9)
+    assert primitive.turned == pytest.approx(before, abs=1e-12)
+
+
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_a_peg_that_takes_over_from_a_point_adds_no_bend_of_its_own(sense: float) -> None:
+    # the shipped harness's last peg: I starts about the clip before it (a
+    # point), the peg is declared mid-turn; from then on the span turns as the
+    # gripper does about the peg plus the change of the bend, and the change
+    # itself adds nothing (it added asin(R / D), 4.4 deg of a 20 deg turn)
+    peg = np.array([0.62, -0.40, 0.0])
+    clip = np.array([0.50, -0.33, 0.0])
+    radius = 0.0085
+    primitive = RotateAroundFeaturePoint("right", -0.5)
+    primitive.turned = 0.0
+    primitive._previous = None
+    p0 = peg + 0.11 * np.array([math.cos(-0.6), math.sin(-0.6), 0.0])
+    primitive._track_angle(p0, clip, None)
+    p1 = peg + 0.11 * np.array([math.cos(-0.62), math.sin(-0.62), 0.0])
+    primitive._track_angle(p1, peg, (np.array([0.0, 0.0, 1.0]), sense, radius))
+    # the same distance from the peg: its bend did not change, the gripper turned 0.02 rad
+    assert primitive.turned == pytest.approx(-0.02, abs=1e-9)

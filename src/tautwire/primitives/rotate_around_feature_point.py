@@ -114,7 +114,6 @@ class RotateAroundFeaturePoint(Primitive):
         self.slack_time = float(slack_time)
         self.turned = 0.0  # angle [rad] the cable's direction has turned so far
         self._previous: np.ndarray | None = None  # the gripper's position [m] last period
-        self._bend = 0.0  # the span's angle [rad] off the gripper's about a peg, last period
         self._slack = SlackWatch(self.slack_time)
         self._ever_taut = False
         self._check: BiasCheck | None = None  # the bias check, once the turn is done
@@ -276,17 +275,21 @@ class RotateAroundFeaturePoint(Primitive):
         b = p_gripper - contact
         b = b - self.axis * float(self.axis @ b)
         distance = norm3(b)
-        bend = 0.0
-        if round_contact is not None and round_contact[2] > 0.0 and distance > 1e-6:
-            bend = round_contact[1] * math.asin(min(round_contact[2] / distance, 1.0))
         if self._previous is not None:
             a = self._previous - contact
             a = a - self.axis * float(self.axis @ a)
             if norm3(a) > 1e-6 and distance > 1e-6:
                 self.turned += math.atan2(float(self.axis @ cross3(a, b)), float(a @ b))
-                self.turned += bend - self._bend
+                if round_contact is not None and round_contact[2] > 0.0:
+                    # the bend at both distances from the current peg: a jump
+                    # of the estimate, or a point contact taken over by a peg,
+                    # turns the span no more than it turns the gripper (the
+                    # shipped harness's P3: C5 taken over by it mid-turn added
+                    # asin(R / D), 4.4 deg, and I counted 30 deg of a true 20)
+                    s, r = round_contact[1], round_contact[2]
+                    bend = math.asin(min(r / distance, 1.0))
+                    self.turned += s * (bend - math.asin(min(r / norm3(a), 1.0)))
         self._previous = p_gripper.copy()
-        self._bend = bend
 
     def _judge(self, obs: Observation, tension: float, taut: bool) -> None:
         assert self.force is not None
