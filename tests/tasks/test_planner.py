@@ -129,6 +129,22 @@ def test_a_peg_on_the_wrong_side_is_passed_over() -> None:
     assert all(s.params["to"][2] > 0.08 + 0.008 for s in kept.steps if s.primitive == "move")  # type: ignore[index]
 
 
+def test_the_route_s_last_peg_is_wound_far_enough_to_find() -> None:
+    # nothing after it to aim at, the catch alone left the model without the
+    # peg (the shipped harness's P3), and the route could never count as done
+    from tautwire.tasks.planner import LAST_WIND, MIN_WIND
+
+    p = plan(cable("W1", [RouteEntry("P1", "right")]))
+    steps = names(p)
+    assert steps[-2:] == ["gripper_alignment", "rotate_around_feature_point"]
+    turn = p.steps[-1]
+    assert turn.params["about"] == "P1"
+    angle = turn.params["angle"]
+    assert isinstance(angle, float)
+    assert angle == pytest.approx(-LAST_WIND, abs=math.radians(1.0))  # right: clockwise
+    assert LAST_WIND > MIN_WIND
+
+
 def test_a_sweep_into_another_fixture_is_refused() -> None:
     # the pegs stand too low to lift the cable over C1 on the way to P1
     low = tuple(replace(f, height=0.035) if f.kind == "peg" else f for f in BOARD)

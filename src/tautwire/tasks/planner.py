@@ -110,6 +110,11 @@ SPAN = 0.12
 GRASP_MARGIN = 0.04
 #: Least turn [rad] of I round a peg that the route goes on from (it finds the peg).
 MIN_WIND = math.radians(20.0)
+#: Turn [rad] of I round the route's last peg past the catch: with nothing
+#: after it to aim at, I still turns the cable far enough to find the peg, so
+#: the model has it (the shipped harness's P3 was caught, never found: W2's
+#: route could not count as done).
+LAST_WIND = math.radians(30.0)
 #: Wraps [rad] this small are left to the catch move (no I step).
 SMALL_TURN = math.radians(3.0)
 #: Decimals of the numbers in a plan (0.1 mm, 0.1 mrad).
@@ -714,7 +719,9 @@ class _Planner:
         t1 = c + u_in * math.sqrt(max(d * d - rho * rho, 0.0))
         t1[2] = c[2]
         target = self.next_point(following)
-        if target is None or float(np.linalg.norm(_flat(target - centre))) <= rho + 1e-3:
+        if target is None:
+            turn = CATCH + LAST_WIND
+        elif float(np.linalg.norm(_flat(target - centre))) <= rho + 1e-3:
             turn = CATCH
         else:
             u_out = _tangent_to(target, centre, rho, sign)
