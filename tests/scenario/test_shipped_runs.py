@@ -16,12 +16,7 @@ from tautwire.scenario import load_scenario
 from tautwire.scenario.registry import resolve_scenario, scenario_names
 
 #: Shipped scenarios that do not yet run to success, and why (measured).
-NOT_YET = {
-    "harness": "W1 runs its route to the end and W2 winds P2 once and clips into C4 "
-    "(reproduce harness, seed 0), every step true; F into C5 then fails honestly "
-    "(not_clipped: the line from C4 crosses C5's slot 8 deg askew and the cable slides off "
-    "the jaws); 0 false successes",
-}
+NOT_YET: dict[str, str] = {}
 
 
 @pytest.mark.slow
