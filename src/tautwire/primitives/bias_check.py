@@ -144,6 +144,14 @@ class BiasCheck:
         elif 2.0 * SETTLE + MEASURE <= t < 2.0 * SETTLE + 2.0 * MEASURE:
             self._step.add(1, force)
 
+    def direction(self) -> FloatArray | None:
+        """The cable's pull direction held still (unit, from the two levels' difference), or None.
+
+        The difference of the two mean pulls: a constant sensor bias cancels.
+        """
+        result = self._step.result()
+        return None if result is None else result.direction.copy()
+
     def verdict(self) -> tuple[bool, str, FloatArray | None]:
         """Whether the bias leaves the contact within its limits, why, and the shift [m].
 

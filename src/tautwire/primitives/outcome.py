@@ -17,6 +17,7 @@ CAUSES: tuple[str, ...] = (
     "precondition",  # the model's state does not allow the primitive (e.g. not held by two)
     "missed",  # a grasp closed on nothing
     "not_aligned",  # the gripper could not be aligned with the cable
+    "not_turned",  # a rotation's pull did not turn by the angle asked, even taken up again
     "sensor_stale",  # the sensor's data stopped advancing or was unusable for too long
     "sensor_bias",  # the force sensor's bias drifted beyond what the estimates tolerate
     "robot_error",  # the robot failed: repeated lost commands or any other robot exception

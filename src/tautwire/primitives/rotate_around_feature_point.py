@@ -20,6 +20,7 @@ from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.primitives.travel_bound import TravelBound, route_to_fixed_point
+from tautwire.primitives.turn_check import TURN_TOLERANCE, TurnCheck
 from tautwire.robot import Arm, Command, Observation
 
 #: Relative swing of the tension set point while circling, and its frequency
@@ -30,6 +31,10 @@ TENSION_SWING = 0.2
 SWING_FREQUENCY = 1.5
 #: Time [s] the bias check adds to the default timeout.
 CHECK_TIME = 4.0 * bias_check.SETTLE + 2.0 * bias_check.MEASURE
+#: Times the turn is taken up again where the pull's turn missed the angle.
+CORRECTIONS = 2
+#: Bounds of the span's turn per counted turn taken for a correction (and its inverse).
+MIN_GAIN = 0.3
 
 
 def _rotate(v: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:
@@ -52,7 +57,13 @@ class RotateAroundFeaturePoint(Primitive):
     Success: the gripper has turned ``angle`` about ``axis`` around the
     contact and, held still there at two tensions, the force sensor shows no
     bias that moves a trusted contact estimate beyond 3 mm, or half a peg's
-    tolerance (:mod:`~tautwire.primitives.bias_check`; else ``sensor_bias``). The turn
+    tolerance (:mod:`~tautwire.primitives.bias_check`; else ``sensor_bias``),
+    and the pull's own direction, before the turn and held still after it,
+    turned by the angle within ``TURN_TOLERANCE``
+    (:mod:`~tautwire.primitives.turn_check`): where it did not, the count
+    was about the wrong point (a far anchor while the cable wraps a near
+    peg), and the gripper takes the turn up again from the pull's reading,
+    forwards or back, up to ``CORRECTIONS`` times (else ``not_turned``). The turn
     is summed period by period about the current estimate (the span from
     the contact to the gripper turns with it; a jump of the estimate
     adds no turn, and no force-sensing fault enters the count: counted on
@@ -119,6 +130,12 @@ class RotateAroundFeaturePoint(Primitive):
         self._check: BiasCheck | None = None  # the bias check, once the turn is done
         self._peg_check = False  # whether it checks about a peg
         self._hold = np.zeros(3)  # where the gripper holds still for it [m]
+        self._direction = math.copysign(1.0, self.angle)  # the sense it turns in now
+        self._turn_check = TurnCheck(self.axis)
+        self._corrections = 0
+        self._pass_count = 0.0
+        self._pass_turned = 0.0
+        self._gain = 1.0
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Remember the start; reset the success criteria."""
@@ -131,6 +148,12 @@ class RotateAroundFeaturePoint(Primitive):
         self._slack.reset()
         self._ever_taut = False
         self._check = None
+        self._direction = math.copysign(1.0, self.angle)
+        self._turn_check = TurnCheck(self.axis)
+        self._corrections = 0
+        self._pass_count = 0.0  # the count [rad] where this pass began
+        self._pass_turned = 0.0  # and the pull's turn [rad] there
+        self._gain = 1.0  # the span's turn per counted turn, as the last pass showed
         self._axis = ToolAxis()
         self._travel = TravelBound(ctx.limits.max_force)
         if self._default_timeout:
@@ -152,6 +175,8 @@ class RotateAroundFeaturePoint(Primitive):
         # enter it, and an estimate e off at radius r errs by about e / r
         if self._check is not None:
             return self._checking(obs, ctx, state)
+        if state.taut:
+            self._turn_check.add_start(state.force)
         radius = self._radius(me.position, state.contact)
         self._track_angle(me.position, state.contact, ctx.estimator.round_contact())
         # set point ahead on the circle: P control with gain k_p then moves
@@ -160,7 +185,7 @@ class RotateAroundFeaturePoint(Primitive):
         limit = self._speed_limit(ctx)
         if radius * speed > limit:  # stay within the speed limit: slower, not off the circle
             speed = limit / radius
-        step = math.copysign(speed, self.angle) / ctx.controller.motion.k_p
+        step = self._direction * speed / ctx.controller.motion.k_p
         target = state.contact + _rotate(me.position - state.contact, self.axis, step)
         # keep the tool axis the cable leaves along on the cable, as measured
         q_target = (
@@ -227,12 +252,55 @@ class RotateAroundFeaturePoint(Primitive):
                 ok = True
                 detail += ", on an estimate the model does not trust"
             if ok:
-                self.outcome = Outcome.success(f"{self._turn_detail}; {detail}")
+                self._judge_turn(obs, ctx, detail)
             else:
                 self.outcome = Outcome.failure(
                     "sensor_bias", f"{detail}: a drifting force-torque sensor bias"
                 )
         return Command(twist)
+
+    def _judge_turn(self, obs: Observation, ctx: PrimitiveContext, detail: str) -> None:
+        """Success if the pull turned by the angle; else take the turn up again, or fail."""
+        assert self._check is not None
+        end = self._check.direction()
+        # the span's turn the count expects, to pick the pull's winding by
+        expected = self._pass_turned + self._gain * (self.turned - self._pass_count)
+        turned = None if end is None else self._turn_check.turned(end, expected)
+        if turned is None:  # no reading (no taut start, or no step): the count stands
+            self.outcome = Outcome.success(f"{self._turn_detail}; {detail}")
+            return
+        reading = (
+            f"the pull turned {math.degrees(turned):.0f} deg (the gripper's path about the"
+            f" contact counted {math.degrees(self.turned):.0f})"
+        )
+        miss = self.angle - turned
+        if abs(miss) <= TURN_TOLERANCE:
+            self.outcome = Outcome.success(f"{self._turn_detail}; {detail}; {reading}")
+            return
+        if self._corrections >= CORRECTIONS:
+            self.outcome = Outcome.failure(
+                "not_turned",
+                f"{reading}, {math.degrees(abs(miss)):.0f} deg "
+                f"{'short of' if miss * self.angle > 0 else 'past'} the"
+                f" {math.degrees(self.angle):.0f} asked, after {self._corrections} corrections",
+            )
+            return
+        # the count was about the wrong point: go on from the pull's reading,
+        # with the count scaled by how the span turned against it this pass
+        # (about a far anchor while the cable wraps a near peg the span
+        # turns about twice as fast as the count: random board 483199372)
+        counted = self.turned - self._pass_count
+        gain = (turned - self._pass_turned) / counted if abs(counted) > 1e-3 else 1.0
+        gain = min(max(gain, MIN_GAIN), 1.0 / MIN_GAIN)
+        self._corrections += 1
+        self.turned = self.angle - miss / gain
+        self._pass_count, self._pass_turned, self._gain = self.turned, turned, gain
+        self._direction = math.copysign(1.0, miss)
+        self._previous = None
+        self._check = None
+        self.outcome = RUNNING
+        assert self.force is not None
+        self.timeout += CHECK_TIME + 3.0 * abs(miss) / self.speed
 
     def _check_travel(self, ctx: PrimitiveContext, state: TensionState) -> None:
         """Fail with ``slipped`` once the route is longer than an intact cable allows."""
@@ -294,7 +362,7 @@ class RotateAroundFeaturePoint(Primitive):
     def _judge(self, obs: Observation, tension: float, taut: bool) -> None:
         assert self.force is not None
         self._ever_taut |= taut
-        if self.turned * math.copysign(1.0, self.angle) >= abs(self.angle):
+        if (self.turned - self.angle) * self._direction >= 0.0:
             self.outcome = Outcome.success(
                 f"turned {math.degrees(self.turned):.0f} deg about {self.about or 'the contact'}"
             )
