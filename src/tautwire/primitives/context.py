@@ -48,6 +48,19 @@ class ClipInfo:
         """Unit direction of the slot (horizontal)."""
         return np.array([np.cos(self.yaw), np.sin(self.yaw), 0.0])
 
+    def exit_towards(self, point: FloatArray) -> FloatArray:
+        """The end of the slot [m] a clipped cable leaves by on its way to ``point``.
+
+        The cable lies along the slot in the jaws and bends only beyond
+        them: a line aimed from the seat misses the cable's by up to half
+        the clip's length times the bend's sine, at the clip.
+        """
+        slot = self.slot
+        along = np.asarray(point, dtype=float) - self.position
+        sign = 1.0 if float(along @ slot) >= 0.0 else -1.0
+        out: FloatArray = self.position + sign * 0.5 * self.length * slot
+        return out
+
 
 @dataclass
 class PrimitiveContext:

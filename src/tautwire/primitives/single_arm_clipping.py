@@ -142,6 +142,7 @@ class SingleArmClipping(Primitive):
         self._tug_reading: TugReading | None = None
         self._reached: float | None = None
         self._line_at_rest = ""  # the force line's verdict at rest, before the tug
+        self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -189,8 +190,10 @@ class SingleArmClipping(Primitive):
     ) -> np.ndarray:
         """Where the cable leaves its contact on the way over the clip [m].
 
-        A point contact (an anchor, a clip, an estimated point): the
-        contact itself. A peg: the cable leaves it tangentially, its radius
+        A point contact (an anchor, an estimated point): the contact
+        itself. A clip: the end of its slot towards this clip
+        (:meth:`ClipInfo.exit_towards`), where the cable leaves its jaws.
+        A peg: the cable leaves it tangentially, its radius
         (the filter's estimate, else the design's peg + cable radius) beside
         the axis point the model holds, on the side it wraps it now
         (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
@@ -206,6 +209,14 @@ class SingleArmClipping(Primitive):
         est = ctx.estimator
         i = est.contact_index
         label = ctx.graph.points[i].label if i is not None else ""
+        clip_before = ctx.clips.get(label)
+        if clip_before is not None and label != self.clip:
+            # a clip the cable is in: it leaves by the slot's end (random
+            # boards 2082005138, 2071274635, 208802845: F aimed from the
+            # seat of the clip before, and the cable slid off the jaws)
+            exit_point = clip_before.exit_towards(info.position)
+            self._lead = norm3(exit_point - clip_before.position)  # cable in its jaws [m]
+            return exit_point
         if label not in est.round_fixtures:
             return c
         estimate = est.contact_estimate()
@@ -432,6 +443,6 @@ class SingleArmClipping(Primitive):
         g, c = est.gripper_index, est.contact_index
         s_c = float(ctx.graph.arc_lengths()[c]) if c is not None else 0.0
         sense = 1.0 if c is None or c < g else -1.0
-        arc = s_c + sense * norm3(self.info.position - self._contact)
+        arc = s_c + sense * (self._lead + norm3(self.info.position - self._contact))
         add_on_sensing_edge(est, arc, self.info.position, "fixed", self.clip)
         self.outcome = verdict
