@@ -174,3 +174,24 @@ def test_a_bias_the_swing_misses_ends_with_sensor_bias_from_the_path() -> None:
     else:
         assert report.cause == "sensor_bias"
         assert "circles a centre" in report.detail
+
+
+def test_an_unresolved_hypothesis_leaves_no_stale_span_to_the_next() -> None:
+    # random board 483199372: a hypothesis raised while the span was lifted
+    # over a peg timed out; the next one kept that lifted span as "the span
+    # when the change began" and put the real peg 48 mm beside it, four
+    # primitives long, until the lines fitting nothing ended the run
+    from tautwire.estimation.contact_point_filter import FilterState
+    from tautwire.primitives.model_estimator import HYPOTHESIS_TIMEOUT, ChangeHypothesis
+
+    est = context().estimator
+    est._track(0)
+    est.contact_filter.start(CONTACT.copy(), 1e-6 * np.eye(3))
+    previous = FilterState(True, CONTACT.copy(), 1e-6 * np.eye(3), None, np.zeros(3), 0.0)
+    est._last_fitting = np.array([0.33, 0.25, 0.18])  # the lifted span's last fitting line
+    est._pending = ChangeHypothesis(previous, since=0)
+    est.iterations = HYPOTHESIS_TIMEOUT + 2
+    # a line far off the contact: no candidate; the hypothesis runs out
+    est._judge_change(GRIPPER + np.array([0.0, 0.2, 0.0]), np.array([0.0, -3.0, 0.0]))
+    assert est._pending is None and est.unresolved
+    assert est._last_fitting is None  # the next hypothesis starts from the span it sees
