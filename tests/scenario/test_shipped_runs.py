@@ -17,6 +17,8 @@ from tautwire.scenario.registry import resolve_scenario, scenario_names
 
 #: Shipped scenarios that do not yet run to success, and why (measured).
 NOT_YET: dict[str, str] = {}
+#: Shipped scenarios run to success by a test of their own (the same checks and more).
+OWN_TEST = {"harness": "tests/tasks/test_harness.py"}
 
 
 @pytest.mark.slow
@@ -27,6 +29,7 @@ NOT_YET: dict[str, str] = {}
         if n in NOT_YET
         else n
         for n in scenario_names()
+        if n not in OWN_TEST
     ],
 )
 def test_a_shipped_scenario_succeeds_truthfully(name: str) -> None:
@@ -37,3 +40,13 @@ def test_a_shipped_scenario_succeeds_truthfully(name: str) -> None:
     for cable in result.cables:
         if cable["route_done"] is not None:
             assert cable["route_done"] and cable["route_truth"]["agrees"], cable
+
+
+def test_a_scenario_left_to_its_own_test_has_one() -> None:
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    for name, path in OWN_TEST.items():
+        assert name in scenario_names()
+        assert (root / path).is_file()
+        assert f'scenario_path("{name}")' in (root / path).read_text()
