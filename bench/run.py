@@ -24,7 +24,10 @@ Figures (medians over thousands of repetitions, microseconds unless named):
   sim_overhead_ratio and sim_realtime_factor; under sim_cables the same per
   cable of 0.2, 0.4, 0.8 and 1.1 m, with MuJoCo's stage timers, contacts and
   constraint rows, and length_exponent_last_two (cost ~ length^p between
-  0.8 and 1.1 m).
+  0.8 and 1.1 m);
+- harness_boards (``bench/harness_boards.py``): random harness boards of
+  ``tautwire reproduce harness --boards`` per minute on 2 workers
+  (boards_per_minute, minutes_for_50, realtime_factor), with what they gave.
 """
 
 from __future__ import annotations
@@ -290,11 +293,24 @@ def sim_benchmarks(seconds: float) -> dict[str, Any]:
     return measure(seconds)
 
 
+def harness_benchmarks(boards: int) -> dict[str, Any]:
+    """Random harness boards per minute on 2 workers (``bench/harness_boards.py``)."""
+    try:
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        from harness_boards import measure
+    except ImportError as exc:  # the simulated world is not available
+        return {"harness_error": f"not available: {exc}"}
+    return {"harness_boards": measure(boards, workers=2, seed=0)}
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--json", action="store_true", help="print one JSON object (default)")
     parser.add_argument("--quick", action="store_true", help="fewer repetitions")
     parser.add_argument("--no-sim", action="store_true", help="skip the simulation figures")
+    parser.add_argument(
+        "--no-harness", action="store_true", help="skip the harness boards (minutes of simulation)"
+    )
     args = parser.parse_args(argv)
     n = 2000 if args.quick else 10000
     result: dict[str, Any] = {
@@ -309,6 +325,8 @@ def main(argv: list[str] | None = None) -> int:
     result.update(control_benchmarks(n))
     if not args.no_sim:
         result.update(sim_benchmarks(2.0 if args.quick else 10.0))
+    if not (args.no_sim or args.no_harness):
+        result.update(harness_benchmarks(2 if args.quick else 4))
     json.dump(result, sys.stdout, indent=2)
     sys.stdout.write("\n")
     return 0
