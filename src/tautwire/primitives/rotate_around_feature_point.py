@@ -252,14 +252,14 @@ class RotateAroundFeaturePoint(Primitive):
                 ok = True
                 detail += ", on an estimate the model does not trust"
             if ok:
-                self._judge_turn(obs, ctx, detail)
+                self._judge_turn(detail)
             else:
                 self.outcome = Outcome.failure(
                     "sensor_bias", f"{detail}: a drifting force-torque sensor bias"
                 )
         return Command(twist)
 
-    def _judge_turn(self, obs: Observation, ctx: PrimitiveContext, detail: str) -> None:
+    def _judge_turn(self, detail: str) -> None:
         """Success if the pull turned by the angle; else take the turn up again, or fail."""
         assert self._check is not None
         end = self._check.direction()
@@ -299,7 +299,6 @@ class RotateAroundFeaturePoint(Primitive):
         self._previous = None
         self._check = None
         self.outcome = RUNNING
-        assert self.force is not None
         self.timeout += CHECK_TIME + 3.0 * abs(miss) / self.speed
 
     def _check_travel(self, ctx: PrimitiveContext, state: TensionState) -> None:

@@ -335,8 +335,7 @@ class SingleArmClipping(Primitive):
                 out[2] = 0.0
                 self._out = out / max(float(np.linalg.norm(out)), 1e-9)
                 self._tug = ClipTug(self._out)
-                side = 1.0 if float(out @ self.info.slot) >= 0.0 else -1.0
-                self._exit = self.info.position + side * 0.5 * self.info.length * self.info.slot
+                self._exit = self.info.exit_towards(me.position)
                 self._exit[2] += JAW_TOP
                 offset = me.position - self._exit
                 self._angle0 = math.atan2(-float(offset[2]), float(offset @ self._out))
