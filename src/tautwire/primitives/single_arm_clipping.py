@@ -89,10 +89,15 @@ class SingleArmClipping(Primitive):
     seat, the model gets a fixed point at q. If the line does not reach the
     seat, it pushes again, deeper, up to ``ATTEMPTS`` times.
 
-    Failure: ``not_clipped`` if no snap is felt down to ``MAX_ANGLE`` or the
-    table (``TABLE_CLEARANCE``; the message gives the planned press against
-    the clip's push force), or the cable did not stay in after the last
-    attempt, or the tug turned the pull about the far contact;
+    Where no snap is felt down to ``MAX_ANGLE`` or the table
+    (``TABLE_CLEARANCE``), it lifts back all the same and judges the line at
+    rest: bent steeply, the line reads high by the bend's offset beyond the
+    exit times the bend's slope, and a snap can go unread.
+
+    Failure: ``not_clipped`` if the cable is not seated at rest after the last
+    attempt (after a push with no snap felt, the message gives the planned
+    press against the clip's push force), or the tug turned the pull about
+    the far contact;
     ``precondition`` if the clip is not between the contact and the gripper
     or its slot is across the cable, or the cable rises more
     than :data:`~tautwire.primitives.clip_sensing.MAX_FAR_RISE` from the
@@ -142,6 +147,7 @@ class SingleArmClipping(Primitive):
         self._tug_reading: TugReading | None = None
         self._reached: float | None = None
         self._line_at_rest = ""  # the force line's verdict at rest, before the tug
+        self._no_snap = ""  # what the push read when it found no snap down to its bottom
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
@@ -355,21 +361,29 @@ class SingleArmClipping(Primitive):
             self.angle += rate * ctx.control_period
             target = self._pivot(obs)
             if self.phase == "press":
-                if self.angle >= self._pressed_to:
+                if self.angle >= self._pressed_to or target[2] < self.floor:
                     self.phase, self._since = "lift", obs.time
             elif self.angle > self._deeper and self.sensing.seated:
                 # felt the snap: press on a little (the line's height is
                 # a few mm uncertain), then lift and verify
                 self.phase, self._pressed_to = "press", self.angle + PRESS_EXTRA
             elif self.angle > MAX_ANGLE or target[2] < self.floor:
+                # no snap read on the way down: lift back and judge at rest.
+                # Steeply bent, the line reads high by the bend's offset
+                # beyond the exit times tan(angle) (random board 1219064744's
+                # F2: the cable snapped in at 42 deg, the line read 7-9 mm
+                # above the seat, 16 mm before the snap); at rest it reads true
                 where = "the table" if target[2] < self.floor else "the steepest bend"
-                self.outcome = Outcome.failure(
-                    "not_clipped",
+                self._no_snap = (
                     f"no snap felt into {self.clip} down to {where}"
-                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat; the bend"
+                    f" (cable {1e3 * (height or 0.0):.1f} mm above its seat there; the bend"
                     f" presses about {self.press:.1f} N of the {self.info.push_force:.1f} N it"
-                    " needs): hold the cable closer to the clip",
+                    " needs)"
                 )
+                self.attempts = ATTEMPTS
+                self._pressed_to = self.angle = min(self.angle, MAX_ANGLE)
+                target = self._pivot(obs)
+                self.phase, self._since = "lift", obs.time
         elif self.phase == "lift":  # back over the clip: feel whether the cable stayed in
             rest = self._angle_rest
             self.angle = max(self.angle - 2.0 * PUSH_RATE * ctx.control_period, rest)
@@ -431,6 +445,11 @@ class SingleArmClipping(Primitive):
         """
         verdict = self.sensing.verdict(self.clip)
         if verdict.status != "success":
+            if self._no_snap:
+                verdict = Outcome.failure(
+                    "not_clipped",
+                    f"{self._no_snap}, and {verdict.detail}: hold the cable closer to the clip",
+                )
             self.outcome = verdict
             return
         if self._tug_reading is not None:
