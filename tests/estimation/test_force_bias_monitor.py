@@ -7,10 +7,10 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.estimation.force_bias_monitor import ForceBiasMonitor, fit_window
 
 
-def circling(bias, swing, seed, omega=0.5, noise=0.06, duration=10.0, rate=250.0):
+def circling(bias, swing, seed, omega=0.5, noise=0.06, duration=10.0, rate=250.0, axis=None):
     """A gripper circling (omega rad/s) with the tension swinging by ``swing`` at 1.5 Hz."""
     rng = np.random.default_rng(seed)
-    monitor = ForceBiasMonitor()
+    monitor = ForceBiasMonitor(axis=axis)
     for i in range(int(duration * rate)):
         t = i / rate
         u = np.array([math.cos(omega * t), math.sin(omega * t), 0.05])
@@ -45,6 +45,23 @@ def test_no_bias_no_alarm(seed):
     assert not m.drifting()
     est = m.estimate()
     assert est is not None and np.linalg.norm(est.bias) < 5.0 * est.std + 0.05
+
+
+@pytest.mark.parametrize("seed", range(2))
+def test_about_an_axis_only_the_bias_normal_to_it_is_judged(seed):
+    # circling a peg, the pull's slope changes with the tension for the
+    # cable's own reasons (it rides the peg, a winding crosses itself)
+    vertical = circling([0.0, 0.0, 0.4], 0.1, seed, axis=[0.0, 0.0, 2.0])
+    assert not vertical.drifting()
+    assert circling([0.0, 0.0, 0.4], 0.1, seed).drifting()  # judged whole: a fault
+    horizontal = circling([0.3, -0.15, 0.4], 0.1, seed, axis=[0.0, 0.0, 1.0])
+    assert horizontal.drifting()
+    assert horizontal.drift is not None
+    # the part normal to the axis, as the first window(s) beyond the bounds read it
+    assert abs(horizontal.drift.bias[2]) < 1e-12
+    assert np.linalg.norm(horizontal.drift.bias - np.array([0.3, -0.15, 0.0])) < 0.15
+    with pytest.raises(InvalidArgumentError):
+        ForceBiasMonitor(axis=[0.0, 0.0, 0.0])
 
 
 def test_a_steady_tension_says_nothing():

@@ -67,10 +67,14 @@ def test_a_two_board_campaign_through_the_cli(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     out = tmp_path / "h"
+    # each board's first three planned steps (its whole task is the harness test's)
     argv = ["reproduce", "harness", "--boards", "2", "--workers", "1", "--seed", "3"]
-    assert main([*argv, "--backend", "serial", "--out", str(out), "--json"]) == 0
+    assert main([*argv, "--steps", "3", "--backend", "serial", "--out", str(out), "--json"]) == 0
     report = json.loads(capsys.readouterr().out)
     assert report["boards"] == 2 and len(report["board_records"]) == 2
+    assert report["steps"] == 3
+    for r in report["board_records"]:
+        assert r["steps"] <= 3 and r["routes_done"] == 0, r
     for key in ("completed", "false_successes", "over_force_limit", "wall_time"):
         assert key in report
     assert report["false_successes"] == sum(r["false_successes"] for r in report["board_records"])
@@ -97,3 +101,7 @@ def test_harness_options_are_checked(capsys: pytest.CaptureFixture[str]) -> None
     assert "only with --boards" in capsys.readouterr().err
     assert main(["reproduce", "fig5a", "--boards", "2"]) != 0
     assert "only for harness" in capsys.readouterr().err
+    assert main(["reproduce", "harness", "--steps", "2"]) != 0
+    assert "only with --boards" in capsys.readouterr().err
+    assert main(["reproduce", "table1", "--steps", "2"]) != 0
+    assert "only for harness --boards" in capsys.readouterr().err

@@ -152,6 +152,13 @@ files under --out; a campaign shows a progress bar on stderr.
     default=None,
     help="harness: run this many random boards instead of the built-in one",
 )
+@click.option(
+    "--steps",
+    type=click.IntRange(min=1),
+    default=None,
+    help="harness --boards: run only each board's first N planned steps (a quick look: "
+    "its routes are then not done)",
+)
 def reproduce(
     name: str,
     out_dir: str | None,
@@ -167,6 +174,7 @@ def reproduce(
     resume: bool,
     no_faults: bool,
     boards: int | None,
+    steps: int | None,
 ) -> int:
     """Regenerate the paper's figure or table NAME (fig5a-c, table1, harness), or robustness.
 
@@ -182,6 +190,8 @@ def reproduce(
     out = Path(out_dir) if out_dir is not None else Path("out") / name
     if boards is not None and name != "harness":
         raise InvalidArgumentError(f"--boards: only for harness, not {name}")
+    if steps is not None and name != "harness":
+        raise InvalidArgumentError(f"--steps: only for harness --boards, not {name}")
     if name == "harness":
         others = {
             "--trials": trials,
@@ -199,6 +209,7 @@ def reproduce(
                 "--backend": backend,
                 "--address": address,
                 "--trial-timeout": trial_timeout,
+                "--steps": steps,
             }
             given = [option for option, value in campaign_only.items() if value is not None]
             if given:
@@ -213,6 +224,7 @@ def reproduce(
             backend=backend or "local",
             address=address,
             trial_timeout=HARNESS_TRIAL_TIMEOUT if trial_timeout is None else trial_timeout,
+            steps=steps,
         )
     if name == "robustness":
         table1_only = {"--letters": letters, "--resume": resume or None}
@@ -561,6 +573,7 @@ def _harness_boards(
     backend: str,
     address: str | None,
     trial_timeout: float,
+    steps: int | None = None,
 ) -> int:
     """Run the random-board campaign with a progress bar on stderr; 130 if interrupted."""
     from tautwire.experiments.harness import reproduce_harness_boards
@@ -583,6 +596,7 @@ def _harness_boards(
             show,
             address=address,
             trial_timeout=trial_timeout if backend == "local" else None,
+            steps=steps,
         )
     if as_json:
         click.echo(json.dumps(report, indent=2))

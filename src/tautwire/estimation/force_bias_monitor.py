@@ -82,6 +82,8 @@ class ForceBiasMonitor:
         sigmas: How many stds the bias must exceed (> 0).
         windows: How many of the last windows are combined (>= 1).
         min_tension: Pulls [N] below this are skipped (the cable is not taut).
+        axis: If given, a bias is judged by its part normal to this axis only
+            (see :attr:`axis`).  # (3,)
     """
 
     def __init__(
@@ -91,6 +93,7 @@ class ForceBiasMonitor:
         sigmas: float = DEFAULT_SIGMAS,
         windows: int = DEFAULT_WINDOWS,
         min_tension: float = 0.5,
+        axis: ArrayLike | None = None,
     ) -> None:
         for name, value in (("window", window), ("threshold", threshold), ("sigmas", sigmas)):
             if not (value > 0.0 and math.isfinite(value)):
@@ -106,6 +109,31 @@ class ForceBiasMonitor:
         self._fits: deque[tuple[FloatArray, FloatArray]] = deque(maxlen=windows)
         #: The estimate found beyond its bounds when the last window closed (None: none).
         self.drift: BiasEstimate | None = None
+        self.axis = axis
+
+    @property
+    def axis(self) -> FloatArray | None:
+        """The unit axis a bias is judged normal to, or None (judged whole).
+
+        Circling about a vertical axis, the pull's slope changes with its
+        size for the cable's own reasons: it rides up and down a peg with the
+        tension, and a winding crosses its own incoming cable (random boards
+        303464894 and 360400295: 0.30 and 0.34 N read, 0.18 N of it
+        vertical, no bias). The held-still check at the rotation's end
+        (:mod:`~tautwire.primitives.bias_check`) judges the whole bias.
+        """
+        return self._axis
+
+    @axis.setter
+    def axis(self, value: ArrayLike | None) -> None:
+        if value is None:
+            self._axis: FloatArray | None = None
+            return
+        a = np.asarray(value, dtype=float).reshape(3)
+        size = float(np.linalg.norm(a))
+        if not (math.isfinite(size) and size > 1e-9):
+            raise InvalidArgumentError(f"axis must be a non-zero 3-vector, got {value!r}")
+        self._axis = a / size
 
     def reset(self) -> None:
         """Forget everything (e.g. after the sensor was tared again)."""
@@ -171,10 +199,28 @@ class ForceBiasMonitor:
         for last in range(1, len(self._fits) + 1):
             est = self.estimate(last)
             assert est is not None
+            if self._axis is not None:
+                est = self._normal_part(est, last)
             size = float(np.linalg.norm(est.bias))
             if size > self.threshold and size > self.sigmas * est.std:
                 return est
         return None
+
+    def _normal_part(self, est: BiasEstimate, last: int) -> BiasEstimate:
+        """``est``'s part normal to :attr:`axis`, its std along that part."""
+        assert self._axis is not None
+        normal = np.eye(3) - np.outer(self._axis, self._axis)
+        bias: FloatArray = normal @ est.bias
+        n = float(np.linalg.norm(bias))
+        if n <= 0.0:
+            return BiasEstimate(bias, est.std, est.windows)
+        direction = bias / n
+        info = np.zeros((3, 3))
+        for _, cov in list(self._fits)[-last:]:
+            info += np.linalg.pinv(cov, rcond=1e-9)
+        combined = np.linalg.pinv(info, rcond=1e-9)
+        std = math.sqrt(max(float(direction @ combined @ direction), 0.0))
+        return BiasEstimate(bias, std, est.windows)
 
 
 def fit_window(times: ArrayLike, forces: ArrayLike) -> tuple[FloatArray, FloatArray] | None:

@@ -319,7 +319,14 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
 
 @dataclass(frozen=True)
 class HarnessTrialFunction:
-    """The campaign's trial function: draw board ``spec.seed``, plan, run, score (picklable)."""
+    """The campaign's trial function: draw board ``spec.seed``, plan, run, score (picklable).
+
+    Attributes:
+        steps: Run only the first ``steps`` planned steps of each board (a
+            quick look; its routes are then not done); None: all of them.
+    """
+
+    steps: int | None = None
 
     def __call__(self, spec: TrialSpec) -> TrialResult:
         """Run one board; a crash is a failed board, never raised."""
@@ -329,7 +336,7 @@ class HarnessTrialFunction:
         drawn = None
         try:
             drawn = draw_board(spec.seed)
-            run = run_board(drawn.scenario)
+            run = run_board(_first_steps(drawn.scenario, self.steps))
             record = _board_record(spec.index, spec.seed, drawn.redraws, run)
             record["fixtures"] = {k: [v[0], v[1]] for k, v in run.fixtures.items()}
             outcome = "success" if record["completed"] else "failure"
@@ -365,6 +372,19 @@ class HarnessTrialFunction:
                 wall_time=time.perf_counter() - t0,
                 record=_failed_record(spec, drawn.redraws if drawn else 0, "error", detail),
             )
+
+
+def _first_steps(scenario: Scenario, steps: int | None) -> Scenario:
+    """``scenario`` with its planned task cut to its first ``steps`` steps (None: as it is)."""
+    if steps is None:
+        return scenario
+    from tautwire.scenario.loader import scenario_from_data
+    from tautwire.scenario.route_problem import plan_scenario
+    from tautwire.scenario.writer import scenario_document
+
+    doc = scenario_document(scenario)
+    doc["task"] = plan_scenario(scenario).task()[:steps]
+    return scenario_from_data(doc, source=f"<{scenario.name}, its first {steps} steps>")
 
 
 def _failed_record(spec: TrialSpec, redraws: int, cause: str, detail: str) -> dict[str, Any]:
@@ -541,6 +561,7 @@ def reproduce_harness_boards(
     address: str | None = None,
     trial_timeout: float | None = None,
     trial: Callable[[TrialSpec], TrialResult] | None = None,
+    steps: int | None = None,
 ) -> dict[str, Any]:
     """Run ``boards`` random boards; write the JSON, Markdown, CSV and the worst board's figure.
 
@@ -556,6 +577,7 @@ def reproduce_harness_boards(
         trial_timeout: ``local`` only: wall time [s] after which a board is
             stopped and recorded as failed with cause ``"hung"``.
         trial: The trial function (tests pass fakes).
+        steps: Run only each board's first ``steps`` planned steps (None: all).
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -573,7 +595,7 @@ def reproduce_harness_boards(
     t0 = time.perf_counter()
     campaign = run_campaign(
         specs,
-        trial or HarnessTrialFunction(),
+        trial or HarnessTrialFunction(steps),
         backend=backend,
         workers=workers,
         address=address,
@@ -591,6 +613,7 @@ def reproduce_harness_boards(
         wall_time=wall,
         interrupted=campaign.interrupted,
         planned=boards,
+        steps=steps,
     )
     report["files"] = {"json": BOARDS_JSON, "markdown": BOARDS_MD, "csv": BOARDS_CSV}
     worst = worst_board(records)

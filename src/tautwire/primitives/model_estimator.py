@@ -62,8 +62,14 @@ FloatArray = NDArray[np.float64]
 SAME_CONTACT = 0.03
 
 
-#: Largest distance [m] between a fixture's design position and a trusted estimate of it.
-DESIGN_GATE = 0.03
+#: Largest distance [m] between a fixture's design position and a trusted
+#: estimate of it: twice the tolerance a fixture sits within of its design
+#: (:data:`~tautwire.estimation.round_contact.DESIGN_TOLERANCE`). Beyond it the
+#: lines' systematic errors are likelier than the fixture: at 30 mm, random
+#: board 483199372's I about F1 (a 20 deg arc, started on the anchor while
+#: the cable already bore on the peg) trusted F1 30 mm along the cable from
+#: its design at a reported 6.8 mm std, the peg exactly at its design.
+DESIGN_GATE = 2.0 * DESIGN_TOLERANCE
 #: Period [s] at which a circling gripper's path is sampled for the centre it circles.
 PATH_PERIOD = 0.04
 #: Std floor [m] of the path's centre (the span's sag and wobble as it turns).
@@ -403,6 +409,8 @@ class ModelEstimator:
     def rotation(self, value: tuple[FloatArray, float] | None) -> None:
         self._rotation = value
         self._rotations += 1
+        # circling, the pull's slope is the cable's: judge a bias normal to the axis
+        self.bias_monitor.axis = None if value is None else value[0]
 
     def contact_position(self) -> FloatArray | None:
         """Best knowledge of the contact position [m].
