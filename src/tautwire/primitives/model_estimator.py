@@ -34,7 +34,7 @@ from tautwire.estimation.contact_point_least_squares import (
     ContactPointLeastSquares,
     direction_spread,
 )
-from tautwire.estimation.force_bias_monitor import ForceBiasMonitor
+from tautwire.estimation.force_bias_monitor import BiasEstimate, ForceBiasMonitor
 from tautwire.estimation.force_line import line_offset_variance, line_point
 from tautwire.estimation.path_centre import PathCentre
 from tautwire.estimation.peg_axis_fit import PegAxisFit
@@ -348,6 +348,14 @@ class ModelEstimator:
         self._path_axis = np.array([0.0, 0.0, 1.0])
         #: Watches the pull's direction against its size for a drifting sensor bias.
         self.bias_monitor = ForceBiasMonitor(min_tension=taut_tension, windows=3)
+        #: Whether a bias the monitor finds is left to the caller as
+        #: :attr:`bias_suspect` (I holds still to check it) instead of ending
+        #: the step: a free tail dragged over the board pulls the gripper with
+        #: a force that does not scale with the tension either (random board
+        #: 303464894's winding: 0.29 N, no bias).
+        self.defer_bias = False
+        #: The bias the monitor found while :attr:`defer_bias`, until taken.
+        self.bias_suspect: BiasEstimate | None = None
         # the last filter samples (mean gripper position, mean raw force)
         self._recent: deque[tuple[FloatArray, FloatArray]] = deque(
             maxlen=contact_filter.detector.window
@@ -637,6 +645,8 @@ class ModelEstimator:
     def _watch_bias(self, time: float, f: FloatArray) -> None:
         """Feed the bias monitor the weight-compensated pull [N]; a drifting bias ends the step.
 
+        With :attr:`defer_bias` it becomes :attr:`bias_suspect` instead.
+
         Raises:
             ModelInconsistentError: when the pull's direction changes with its
                 size as only a sensor bias makes it (cause ``sensor_bias``).
@@ -645,6 +655,10 @@ class ModelEstimator:
         if self.bias_monitor.drifting():
             est = self.bias_monitor.drift
             assert est is not None
+            if self.defer_bias:
+                self.bias_suspect = est
+                self.bias_monitor.reset()
+                return
             raise ModelInconsistentError(
                 f"the pull's direction changes with its size as a {norm3(est.bias):.2f} N"
                 f" force bias (std {est.std:.2f} N, over {est.windows} windows) makes it:"
@@ -1354,15 +1368,22 @@ class ModelEstimator:
         if s_new <= s[c]:
             return False
         label = "estimated"
+        design: FloatArray | None = None
         for name, (axis_point, radius) in self.round_fixtures.items():
             # the board design says which peg this is, if one is near
             if float(np.linalg.norm((estimate - axis_point)[:2])) <= radius + 0.02:
-                label = name
+                label, design = name, np.asarray(axis_point, dtype=float)
         i = self.graph.insert_at_arc_length(s_new, kind="contact", label=label)
         point = self.graph.points[i]
         point.kind, point.label, point.position = "contact", label, estimate.copy()
+        if design is not None:
+            # a peg of the board design keeps its design position (normal to
+            # its axis) until its estimate is trusted, and a trusted one stays
+            # within DESIGN_GATE of it: unlabelled so, random board 483199372's
+            # F1, found mid-I, went into the model 30 mm off as it was estimated
+            point.position = design + PEG_AXIS * float(PEG_AXIS @ (estimate - design))
         self._filter_point = point  # the filter, restarted on the change, estimates it
-        self._design = None
+        self._design = None if design is None else design.copy()
         return True
 
     def _update_graph(self, obs: Observation, g: int, c: int | None) -> None:

@@ -36,6 +36,9 @@ CHECK_TIME = 4.0 * bias_check.SETTLE + 2.0 * bias_check.MEASURE
 #: while the cable already bore on F3, the first pass turned the span 55 deg
 #: for 30; two corrections left it 4.4 deg short, outside the tolerance).
 CORRECTIONS = 3
+#: Times a bias the swinging pull suggests mid-turn is checked holding
+#: still before the turn goes on; beyond, only the final check judges.
+SUSPECT_CHECKS = 2
 #: Bounds of the span's turn per counted turn taken for a correction (and its inverse).
 MIN_GAIN = 0.3
 
@@ -71,7 +74,11 @@ class RotateAroundFeaturePoint(Primitive):
     the contact to the gripper turns with it; a jump of the estimate
     adds no turn, and no force-sensing fault enters the count: counted on
     the measured pull's direction, a low-pass lag fell 8 deg short of the
-    true 222 deg in robustness trial 67). Failure:
+    true 222 deg in robustness trial 67). Where the swinging pull suggests
+    a bias mid-turn (the model estimator's monitor), the gripper holds still
+    for the same check before it turns on, up to ``SUSPECT_CHECKS`` times:
+    the friction of a free tail dragged over the board pulls like a bias
+    while the gripper moves, not while it holds still. Failure:
     ``slipped`` if the tension stays below a fifth of its set point for
     ``slack_time`` after having been taut, or once the route to the fixed
     point is longer than an intact cable allows
@@ -146,6 +153,10 @@ class RotateAroundFeaturePoint(Primitive):
             self.force = ctx.tension if ctx.tension is not None else 3.0
         ctx.estimator.learn_elasticity = False
         ctx.estimator.rotation = (self.axis, math.copysign(1.0, self.angle))
+        ctx.estimator.defer_bias = True  # a suspected bias is checked holding still
+        ctx.estimator.bias_suspect = None
+        self._suspect = ""  # what the swinging pull suggested, while its check runs
+        self._suspect_checks = 0
         self.turned = 0.0
         self._previous = None
         self._slack.reset()
@@ -199,6 +210,18 @@ class RotateAroundFeaturePoint(Primitive):
         twist = tension_twist(ctx, obs, self.arm, desired, self.force * swing, state)
         self._judge(obs, state.tension, state.taut)
         self._check_travel(ctx, state)
+        suspect = ctx.estimator.bias_suspect
+        ctx.estimator.bias_suspect = None
+        if suspect is not None and not self.outcome.done and self._suspect_checks < SUSPECT_CHECKS:
+            # the swinging pull suggests a bias, which a dragged tail's
+            # friction mimics: hold still at two tensions, which tells them apart
+            self._suspect_checks += 1
+            self._suspect = (
+                f"turning, the swinging pull read a {norm3(suspect.bias):.2f} N bias"
+                f" (std {suspect.std:.2f} N)"
+            )
+            self.timeout += CHECK_TIME
+            self.outcome = Outcome.success("")  # start the check as at the turn's end
         if self.outcome.status == "success":  # turned: check the sensor before saying so
             round_contact = ctx.estimator.round_contact()
             peg = None
@@ -254,11 +277,17 @@ class RotateAroundFeaturePoint(Primitive):
                 # (Table I I:0, an anchor untrusted for its tail's weight, read 4.5 mm)
                 ok = True
                 detail += ", on an estimate the model does not trust"
-            if ok:
+            if ok and self._suspect:  # no bias held still: turn on
+                self._suspect = ""
+                self._check = None
+                self._previous = None
+                self.outcome = RUNNING
+            elif ok:
                 self._judge_turn(detail)
             else:
+                why = f"{self._suspect}; " if self._suspect else ""
                 self.outcome = Outcome.failure(
-                    "sensor_bias", f"{detail}: a drifting force-torque sensor bias"
+                    "sensor_bias", f"{why}{detail}: a drifting force-torque sensor bias"
                 )
         return Command(twist)
 
