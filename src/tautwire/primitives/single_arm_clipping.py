@@ -54,6 +54,12 @@ ALIGN_TOLERANCE = 0.003
 #: shipped harness's C2: 4.6 mm beside, with the gripper 3 mm off its set
 #: point and the cable 2 mm beside the tool centre point).
 ALIGN_MISS = 0.0007
+#: Longest time [s] the push waits at the table for the gripper to get down
+#: to its set point (force control along the sloping cable lags: random board
+#: 1652323633's F1 stopped 11 mm above the floor, a sixth of the drop lost).
+FLOOR_DWELL = 1.0
+#: How near [m] the floor the gripper must come for the push to end there sooner.
+FLOOR_REACHED = 0.002
 #: Time [s] the gripper rests lifted in the tug before the pull is read.
 TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
@@ -138,6 +144,7 @@ class SingleArmClipping(Primitive):
         self._pressed_to = 0.0
         self.attempts = 1
         self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
+        self._at_floor: float | None = None  # when the push's set point reached the floor
         self._axis = ToolAxis()
         self._hold = current_pose(obs)
         self._slack = SlackWatch(1.0)
@@ -360,6 +367,19 @@ class SingleArmClipping(Primitive):
             rate = PUSH_RATE if self._tug_reading is None else 2.0 * PUSH_RATE
             self.angle += rate * ctx.control_period
             target = self._pivot(obs)
+            floored = False
+            if self.phase == "push" and target[2] < self.floor:
+                # at the table: hold the set point there until the gripper
+                # is down too (or a dwell passes), feeling for the snap
+                self.angle -= rate * ctx.control_period
+                target = self._pivot(obs)
+                target[2] = max(float(target[2]), self.floor)
+                if self._at_floor is None:
+                    self._at_floor = obs.time
+                floored = (
+                    obs.time - self._at_floor >= FLOOR_DWELL
+                    or float(me.position[2]) - self.floor <= FLOOR_REACHED
+                )
             if self.phase == "press":
                 if self.angle >= self._pressed_to or target[2] < self.floor:
                     self.phase, self._since = "lift", obs.time
@@ -367,13 +387,13 @@ class SingleArmClipping(Primitive):
                 # felt the snap: press on a little (the line's height is
                 # a few mm uncertain), then lift and verify
                 self.phase, self._pressed_to = "press", self.angle + PRESS_EXTRA
-            elif self.angle > MAX_ANGLE or target[2] < self.floor:
+            elif self.angle > MAX_ANGLE or floored:
                 # no snap read on the way down: lift back and judge at rest.
                 # Steeply bent, the line reads high by the bend's offset
                 # beyond the exit times tan(angle) (random board 1219064744's
                 # F2: the cable snapped in at 42 deg, the line read 7-9 mm
                 # above the seat, 16 mm before the snap); at rest it reads true
-                where = "the table" if target[2] < self.floor else "the steepest bend"
+                where = "the table" if floored else "the steepest bend"
                 self._no_snap = (
                     f"no snap felt into {self.clip} down to {where}"
                     f" (cable {1e3 * (height or 0.0):.1f} mm above its seat there; the bend"
@@ -401,6 +421,7 @@ class SingleArmClipping(Primitive):
                 else:  # not in: push again, deeper than the last time (and tug again)
                     self.attempts += 1
                     self.phase, self._deeper = "push", self._pressed_to + PRESS_EXTRA
+                    self._at_floor = None
                     self._tug_reading = None
         else:  # tug: lift above the line (clip_tug.py)
             goal = self._angle_rest - tug_angle(self.info.push_force, self._base_force)
