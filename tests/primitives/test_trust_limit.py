@@ -9,8 +9,8 @@ from tautwire.estimation.contact_point_filter import FilterState
 from tautwire.primitives.model_estimator import (
     CONTACT_TOLERANCE,
     POINT_TRUST_FRACTION,
+    ROUND_LINE_ERROR,
     SYSTEMATIC_LINE_ERROR,
-    TRUST_FRACTION,
 )
 from tests.primitives.conftest import CONTACT, context
 
@@ -32,11 +32,17 @@ def test_a_point_is_trusted_on_the_std_it_reports() -> None:
     assert not est._trusted_variance(_state(1.01 * inside))
 
 
-def test_a_peg_keeps_its_own_fraction_of_its_wider_tolerance() -> None:
+def test_a_peg_is_trusted_on_the_std_it_reports_against_its_wider_tolerance() -> None:
     est = context(round_fixtures={"A1": (CONTACT, 0.0085)}).estimator
     est._track(0)
     tolerance = CONTACT_TOLERANCE + 0.0085 - 0.003
-    assert est.trust_limit() == pytest.approx(min(est.trusted_std, TRUST_FRACTION * tolerance))
+    limit = est.trust_limit()
+    assert limit == pytest.approx(min(est.trusted_std, POINT_TRUST_FRACTION * tolerance))
+    inside = np.sqrt(limit**2 - ROUND_LINE_ERROR**2)
+    assert est._trusted_variance(_state(0.99 * inside))
+    assert not est._trusted_variance(_state(1.01 * inside))
+    # the shipped harness's P3: 4.8 mm of filter std (6.3 mm reported), 11.2 mm off
+    assert not est._trusted_variance(_state(4.8e-3))
 
 
 def test_a_design_fixture_keeps_its_design_until_its_estimate_is_trusted() -> None:
