@@ -267,6 +267,27 @@ def test_out_of_reach() -> None:
     assert "out of reach" in err.reason
 
 
+def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:
+    # NEAR lies right of the cable leaving C1: kept on the cable's left, the
+    # cable is lifted over its top 10 cm from C1, 21 deg up out of the clip
+    near = BoardFixture("NEAR", "peg", (0.45, 0.0, 0.05), radius=0.006, height=0.06)
+    board = (*BOARD, near)
+    route = [RouteEntry("C1"), RouteEntry("NEAR", "left")]
+    problem = RouteProblem(board, (cable("W1", route, length=0.9),), ROBOT)
+    with pytest.raises(RouteError) as info:
+        plan_routes(problem)
+    err = info.value
+    assert (err.cable, err.entry, err.fixture) == ("W1", 2, "NEAR")
+    assert "out of C1" in err.reason and "\n" not in str(err)
+    # on the side the cable comes from it is swept onto the peg, no lift
+    kept = plan_routes(
+        RouteProblem(
+            board, (cable("W1", [route[0], RouteEntry("NEAR", "right")], length=0.9),), ROBOT
+        )
+    )
+    assert not any("over the peg" in s.why for s in kept.steps)
+
+
 def test_clip_too_low_to_press_in() -> None:
     err = error_of(cable("W1", [RouteEntry("LOW")]))
     assert (err.entry, err.fixture) == (1, "LOW")

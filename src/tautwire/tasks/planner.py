@@ -48,7 +48,13 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import TautwireError
-from tautwire.primitives.clip_sensing import JAW_TOP, PRESS_MARGIN, PivotPress, push_tension
+from tautwire.primitives.clip_sensing import (
+    JAW_TOP,
+    MAX_FAR_RISE,
+    PRESS_MARGIN,
+    PivotPress,
+    push_tension,
+)
 from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
 from tautwire.primitives.single_arm_clipping import (
     ABOVE,
@@ -104,6 +110,11 @@ TOUCH = math.radians(5.0)
 SWEEP_STEP = math.radians(30.0)
 #: Height [m] over a peg's top at which a lifted cable passes it.
 OVER_PEG = 0.02
+#: Steepest rise [rad] of a taut cable from the clip it last went into: steeper,
+#: it draws its end up into the jaws' throat (F's own limit, MAX_FAR_RISE), and
+#: pulled across the slot too it comes out (random board 1808415002: lifted
+#: over F3 at 25 deg from F2 and 60 deg across its slot, W1 left F2, slack).
+CLIP_RISE = MAX_FAR_RISE
 #: Cable length [m] between the two grippers of a parallel clip (H + C).
 SPAN = 0.12
 #: H grasps at least this far [m] from either end of the taut edge.
@@ -808,6 +819,18 @@ class _Planner:
                 f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m, and the "
                 f"cable cannot pass the peg higher than z = {hi:.3f} m",
             )
+        last = self.fixtures.get(cable.last) if cable.last else None
+        if last is not None and last.kind == "clip":
+            for point, why in motion.moves:
+                run = float(np.linalg.norm(_flat(point - c)))
+                rise = math.atan2(float(point[2] - c[2]), max(run, 1e-6))
+                if rise > CLIP_RISE:
+                    raise self.fail(
+                        cable,
+                        f"to {why}, the gripper at z = {float(point[2]):.3f} m pulls the cable up "
+                        f"out of {last.name} at {math.degrees(rise):.0f} deg (the clip holds it "
+                        f"to {math.degrees(CLIP_RISE):.0f} deg)",
+                    )
         if following is not None and motion.rest < MIN_WIND:
             raise self.fail(
                 cable,
