@@ -347,9 +347,9 @@ class ModelEstimator:
         self.bias_monitor = ForceBiasMonitor(min_tension=taut_tension, windows=3)
         #: Whether a bias the monitor finds is left to the caller as
         #: :attr:`bias_suspect` (I holds still to check it) instead of ending
-        #: the step: a free tail dragged over the board pulls the gripper with
-        #: a force that does not scale with the tension either (random board
-        #: 303464894's winding: 0.29 N, no bias).
+        #: the step: circling, pulls that do not scale with the tension arise
+        #: without a bias too (random board 303464894's winding: 0.29 N, no
+        #: fault).
         self.defer_bias = False
         #: The bias the monitor found while :attr:`defer_bias`, until taken.
         self.bias_suspect: BiasEstimate | None = None

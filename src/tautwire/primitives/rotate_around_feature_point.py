@@ -77,8 +77,10 @@ class RotateAroundFeaturePoint(Primitive):
     true 222 deg in robustness trial 67). Where the swinging pull suggests
     a bias mid-turn (the model estimator's monitor), the gripper holds still
     for the same check before it turns on, up to ``SUSPECT_CHECKS`` times:
-    the friction of a free tail dragged over the board pulls like a bias
-    while the gripper moves, not while it holds still. Failure:
+    the swing's monitor sees only the moving gripper's pull, and pulls
+    that do not scale with the tension arise there without a bias (random
+    board 303464894's winding: 0.29-0.36 N, no fault; held still the pull
+    still showed 0.13 N there, a source not yet traced). Failure:
     ``slipped`` if the tension stays below a fifth of its set point for
     ``slack_time`` after having been taut, or once the route to the fixed
     point is longer than an intact cable allows
@@ -213,8 +215,8 @@ class RotateAroundFeaturePoint(Primitive):
         suspect = ctx.estimator.bias_suspect
         ctx.estimator.bias_suspect = None
         if suspect is not None and not self.outcome.done and self._suspect_checks < SUSPECT_CHECKS:
-            # the swinging pull suggests a bias, which a dragged tail's
-            # friction mimics: hold still at two tensions, which tells them apart
+            # the swinging pull suggests a bias: judge it as at the turn's
+            # end, holding still at two tensions
             self._suspect_checks += 1
             self._suspect = (
                 f"turning, the swinging pull read a {norm3(suspect.bias):.2f} N bias"
