@@ -110,7 +110,8 @@ TOUCH = math.radians(5.0)
 SWEEP_STEP = math.radians(30.0)
 #: Height [m] over a peg's top at which a lifted cable passes it.
 OVER_PEG = 0.02
-#: Steepest rise [rad] of a taut cable from the clip it last went into: steeper,
+#: Steepest rise [rad] of a taut cable from the clip it last went into while
+#: the moves that catch a peg carry it (the one check so far): steeper,
 #: it draws its end up into the jaws' throat (F's own limit, MAX_FAR_RISE), and
 #: pulled across the slot too it comes out (random board 1808415002: lifted
 #: over F3 at 25 deg from F2 and 60 deg across its slot, W1 left F2, slack).
