@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import mujoco
 import numpy as np
 import pytest
 
@@ -12,7 +13,8 @@ from tautwire.experiments.run_scenario import run_scenario
 from tautwire.robot import GripperCommand
 from tautwire.scenario import load_scenario
 from tautwire.sim import SimulationDiverged
-from tautwire.sim.transmitted_wrench import explicit_wrench
+from tautwire.sim.gripper_state import integrate_pose
+from tautwire.sim.transmitted_wrench import explicit_wrench, free_joint_wrench
 from tests.sim.scenes import anchor_and_gripper, peg_scene, rest
 
 MU_PAD = 0.5  # SimOptions.pad_friction default
@@ -44,6 +46,43 @@ def test_sliding_friction_through_gripper_is_two_mu_grip(grip: float) -> None:
     assert -forces[:, 0].mean() == pytest.approx(2.0 * MU_PAD * grip, rel=0.10)
 
 
+@pytest.mark.parametrize("turning", [False, True])
+def test_a_control_period_reads_the_mean_of_its_physics_steps(
+    turning: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # the period's wrench is the mean of its physics steps' wrenches (each read
+    # as free_joint_wrench at the pose before its step), not the last one's
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.4, 1000.0, held_at=0.2)
+    rest(world, 0.1)
+    twist = np.zeros(12)
+    twist[0] = 0.02  # pull along the cable: the force changes step by step
+    if turning:
+        twist[3:6] = [0.0, 0.0, 0.8]
+    world.set_twist(twist)
+    dof = world._gripper_dof["left"]
+    g = world._grippers["left"]
+    steps: list[tuple[np.ndarray, np.ndarray]] = []
+    real_step = mujoco.mj_step
+
+    def recorded(m: mujoco.MjModel, d: mujoco.MjData, n: int = 1) -> None:
+        assert n == 1
+        q = integrate_pose(
+            g.position, g.orientation, g.linear, g.angular, len(steps) * world.timestep
+        )[1]
+        real_step(m, d, n)
+        steps.append(free_joint_wrench(d, dof, q))
+
+    monkeypatch.setattr(mujoco, "mj_step", recorded)
+    world.step()
+    monkeypatch.undo()
+    assert len(steps) == world.substeps > 1
+    force, torque = world.wrench("left")
+    forces = np.array([f for f, _ in steps])
+    assert np.ptp(forces[:, 0]) > 1e-3  # the steps differ
+    assert np.allclose(force, forces.mean(axis=0), rtol=0.0, atol=1e-12)
+    assert np.allclose(torque, np.mean([t for _, t in steps], axis=0), rtol=0.0, atol=1e-12)
+
+
 def test_free_joint_wrench_equals_sum_of_equality_and_contact_forces() -> None:
     world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.4, 1000.0, held_at=0.2)
     rest(world, 0.1)
@@ -55,7 +94,8 @@ def test_free_joint_wrench_equals_sum_of_equality_and_contact_forces() -> None:
             world._model, world._data, world._gripper_bodies["left"], hold_ids, p, q
         )
 
-    # held: the connect equality carries the force
+    # held: the connect equality carries the force (one physics step: its own wrench)
+    world.step(1)
     force, torque = world.wrench("left")
     f2, t2 = explicit()
     assert np.linalg.norm(force) > 0.01
