@@ -22,6 +22,7 @@ def test_run_json_result(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> 
     assert contact["fixture"] == "A1" and contact["error"] < 0.003
     assert len(contact["std"]) == 3
     assert result["stiffness"]["truth"] == 200.0
+    assert result["stiffness"]["estimate"] == pytest.approx(200.0, rel=0.2)
     assert result["max_force"] < 15.0
     assert set(result["model_error"]) == {
         "horizontal_mean",

@@ -8,7 +8,7 @@ import pytest
 
 from tautwire.primitives import RotateAroundFeaturePoint, SingleArmTension
 from tautwire.primitives.model_estimator import ModelInconsistentError
-from tautwire.robot import Observation, Wrench
+from tautwire.robot import Command, Observation, Wrench
 from tautwire.tasks import run_step
 from tests.primitives.conftest import CONTACT, GRIPPER, context
 from tests.primitives.spring_robot import SpringCableRobot
@@ -195,3 +195,59 @@ def test_an_unresolved_hypothesis_leaves_no_stale_span_to_the_next() -> None:
     est._judge_change(GRIPPER + np.array([0.0, 0.2, 0.0]), np.array([0.0, -3.0, 0.0]))
     assert est._pending is None and est.unresolved
     assert est._last_fitting is None  # the next hypothesis starts from the span it sees
+
+
+class LeavingRobot(SpringCableRobot):
+    """The spring cable taut over a clip until ``leave_time``, then straight from the anchor."""
+
+    def __init__(self, anchor: np.ndarray, clip: np.ndarray, leave_time: float | None) -> None:
+        super().__init__(clip, LEAVE_GRIPPER, 200.0, seed=21)
+        self.anchor, self.leave_time = anchor, leave_time
+
+    def act(self, command) -> None:  # type: ignore[no-untyped-def]
+        super().act(command)
+        if self.leave_time is not None and self.time >= self.leave_time:
+            # out of the clip: the length between anchor and clip joins the span
+            self.rest += float(np.linalg.norm(self.contact - self.anchor))
+            self.contact = self.anchor
+            self.leave_time = None
+
+
+LEAVE_ANCHOR = np.array([0.0, 0.15, 0.1])
+LEAVE_CLIP = np.array([0.15, 0.0, 0.1])
+LEAVE_GRIPPER = np.array([0.45, 0.0, 0.1])
+
+
+def _clip_context():  # type: ignore[no-untyped-def]
+    from tautwire.model import PathGraph
+    from tautwire.primitives import make_context
+
+    graph = PathGraph.from_positions(
+        [LEAVE_ANCHOR, LEAVE_CLIP, LEAVE_GRIPPER],
+        mass_per_length=0.0,
+        kinds=["fixed", "fixed", "gripper"],
+        labels=["A1", "C1", "left"],
+    )
+    return make_context(graph, "left", k_initial=100.0, estimation_period=0.04)
+
+
+@pytest.mark.parametrize("leaves", [False, True])
+def test_a_cable_pulled_out_of_its_clip_drops_the_clip(leaves: bool) -> None:
+    # the cable leaves the clip while slack: pulled taut again, its lines meet
+    # at the anchor, 95 mm beside the clip, and the model must not keep C1
+    robot = LeavingRobot(LEAVE_ANCHOR, LEAVE_CLIP, None)
+    ctx = _clip_context()
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    end = robot.time + 0.3
+    robot.leave_time = robot.time + 0.1 if leaves else None
+    while robot.time < end:
+        robot.act(Command())
+    report = run_step(robot, SingleArmTension("left", 3.0), ctx)
+    labels = [p.label for p in ctx.graph.points]
+    if leaves:
+        assert report.cause == "left_fixture", report
+        assert "C1" in report.detail and "A1" in report.detail
+        assert labels == ["A1", "left"]
+    else:
+        assert report.success, report
+        assert labels == ["A1", "C1", "left"]

@@ -1,4 +1,9 @@
-"""Closed loop in the MuJoCo world: D then I around an anchor, blind."""
+"""Closed loop in the MuJoCo world: D then I around an anchor, blind, run twice.
+
+The scene's full run (the estimate within 3 mm of the true anchor, k_hat
+within 20 %) is checked through the CLI (``tests/cli/test_run.py``) and as a
+shipped scenario (``tests/scenario/test_shipped_runs.py``).
+"""
 
 import numpy as np
 import pytest
@@ -6,7 +11,7 @@ import pytest
 from tautwire.primitives import make_primitive
 from tautwire.scenario import load_scenario
 from tautwire.scenario.registry import scenario_path
-from tautwire.sim.build import build_world, robot_of, truth_of
+from tautwire.sim.build import build_world, robot_of
 from tautwire.tasks import run_step
 from tautwire.tasks.initial_model import initial_context
 
@@ -30,18 +35,6 @@ def run(seed: int, angle: float | None = None) -> tuple[list[str], np.ndarray, f
     estimate = ctx.estimator.contact_filter.estimate
     assert estimate is not None
     return outcomes, estimate, ctx.estimator.elasticity.k_hat
-
-
-@pytest.mark.slow
-def test_tension_then_circle_finds_the_anchor() -> None:
-    outcomes, estimate, k_hat = run(seed=1)
-    assert outcomes == ["success", "success"]
-    scenario = load_scenario(SCENARIO)
-    world = build_world(scenario, seed=1)
-    truth = truth_of(world).contact("A1")
-    assert truth is not None
-    assert np.linalg.norm(estimate - truth.point) < 0.003
-    assert k_hat == pytest.approx(200.0, rel=0.2)
 
 
 @pytest.mark.slow

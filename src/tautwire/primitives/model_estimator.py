@@ -137,6 +137,11 @@ ROUTE_RELATIVE_TOLERANCE = 0.01
 ROUTE_FRICTION = 0.4
 #: Lines in a row that fit the accepted contact again make a hypothesis spurious.
 REJECT_RUN = 5
+#: Lines in a row that miss the contact and fit the constrained point before it
+#: (further from the gripper along the cable): the cable left the contact.
+LEAVE_RUN = 10
+#: ... each missing the contact by at least this much [m], the two told apart as far.
+LEAVE_MARGIN = 0.015
 #: Filter iterations after which a hypothesis that neither fits nor fails is dropped.
 HYPOTHESIS_TIMEOUT = 75
 #: Dropped hypotheses in a row, with no run of ``CONFIRMED_RUN`` fitting lines
@@ -194,6 +199,16 @@ class ModelInconsistentError(TautwireError):
     """The force no longer fits the model: no contact explains the lines (cause ``sensor_bias``)."""
 
     cause = "sensor_bias"
+
+
+class FixtureLeftError(TautwireError):
+    """The cable left a fixture the model had it at: its pull lines up with the point before.
+
+    The model drops the fixture before this is raised, so it is true again
+    (cause ``left_fixture``).
+    """
+
+    cause = "left_fixture"
 
 
 @dataclass
@@ -364,6 +379,7 @@ class ModelEstimator:
         self._design: FloatArray | None = None  # design position of the filter's point
         #: A contact change under test (None: the filter's point is as accepted).
         self._pending: ChangeHypothesis | None = None
+        self._leaving = 0  # lines in a row that say the cable left its contact
         #: Iterations at which a hypothesised change was found spurious (the
         #: old contact fitted again) or unresolved (no point fitted in time).
         self.rejected: list[int] = []
@@ -877,6 +893,8 @@ class ModelEstimator:
             result = kf.update(self._on_axis(p_mean, f_mean), f_mean, torque=tau_mean)
         self.iterations += 1
         self._recent.append((p_line, f_mean))
+        if self._watch_leave(p_line, f_mean):
+            return True
         if self._pending is not None:
             return self._judge_change(p_line, f_mean)
         if (
@@ -956,6 +974,138 @@ class ModelEstimator:
                     " force-torque sensor bias, or a contact the model cannot describe"
                 )
         return False
+
+    def _point_left_for(self) -> FeaturePoint | None:
+        """The constrained point before the contact, which the cable would pull from if it left it.
+
+        None when the contact is not before the gripper, or the point before
+        it is the other gripper or missing.
+        """
+        g = self.gripper_index
+        c = self._contact_index(g)
+        if c is None or c > g:
+            return None
+        before = self.point_before(c)
+        if before is None or before.kind == "gripper":
+            return None
+        return before
+
+    def _nearest_to_line(
+        self, point: FeaturePoint, p_line: FloatArray, f: FloatArray
+    ) -> tuple[FloatArray, FloatArray]:
+        """Where a line through ``p_line`` along ``f`` would touch ``point``, and its covariance.
+
+        The point's position (a peg's line is tangent to it: the point of its
+        circle nearest the line) and covariance (the design's tolerance where
+        it has none).
+        """
+        x = point.position.copy()
+        P = point.covariance if point.covariance is not None else DESIGN_TOLERANCE**2 * np.eye(3)
+        if point.label in self.round_fixtures:
+            radius = self.round_fixtures[point.label][1]
+            u = f / max(norm3(f), 1e-12)
+            w = x - p_line
+            to_axis = w - float(w @ u) * u
+            to_axis -= PEG_AXIS * float(PEG_AXIS @ to_axis)  # across the axis only
+            distance = norm3(to_axis)
+            if distance > 1e-9:
+                x -= min(radius, distance) * to_axis / distance
+        return x, np.asarray(P, dtype=float)
+
+    def _line_test(
+        self, point: FeaturePoint, p_line: FloatArray, f: FloatArray
+    ) -> tuple[float, float]:
+        """How the line through ``p_line`` along ``f`` misses ``point``: (NIS, distance [m])."""
+        x, P = self._nearest_to_line(point, p_line, f)
+        state = FilterState(True, x, P, None, np.zeros(3), 0.0)
+        nis, _ = self.contact_filter.line_test(state, p_line, f)
+        u = f / max(norm3(f), 1e-12)
+        w = x - p_line
+        return nis, norm3(w - float(w @ u) * u)
+
+    def _watch_leave(self, p_line: FloatArray, f: FloatArray) -> bool:
+        """Count lines that say the cable left its contact; True once it has (graph changed).
+
+        The cable may leave its contact (pulled out of a clip, off a peg):
+        its pull then lines up with the constrained point before it. A line
+        says so when it misses the contact by ``LEAVE_MARGIN``, fits the
+        point before (the change test) better than the contact, and the two
+        are told apart (the line from it through the contact misses the
+        point before by ``LEAVE_MARGIN`` too). ``LEAVE_RUN`` such lines in a
+        row: the cable left the contact (:meth:`_leave_contact`). Random
+        board 186634244: W1 left clip F3 as the gripper rose to go round to
+        F4; the filter, restarted at the clip, converged towards peg F2
+        untrusted (no change to judge), and four steps went on with F3 in
+        the model.
+        """
+        before = self._point_left_for()
+        c = self.contact_index
+        says = False
+        if before is not None and c is not None:
+            contact = self.graph.points[c]
+            nis_c, miss_c = self._line_test(contact, p_line, f)
+            if miss_c > LEAVE_MARGIN:
+                nis_b, _ = self._line_test(before, p_line, f)
+                x_c, _ = self._nearest_to_line(contact, p_line, f)
+                x_b, _ = self._nearest_to_line(before, p_line, f)
+                u = (x_c - p_line) / max(norm3(x_c - p_line), 1e-12)
+                w = x_b - p_line
+                apart = norm3(w - float(w @ u) * u)
+                says = (
+                    nis_b <= self.contact_filter.detector.threshold
+                    and nis_b < nis_c
+                    and apart > LEAVE_MARGIN
+                )
+        self._leaving = self._leaving + 1 if says else 0
+        if before is None or self._leaving < LEAVE_RUN:
+            return False
+        self._leaving = 0
+        return self._leave_contact(before)
+
+    def _leave_contact(self, before: FeaturePoint) -> bool:
+        """The cable left the points between ``before`` and the gripper: drop them.
+
+        The filter goes on at ``before``. Raises :class:`FixtureLeftError`
+        when a dropped point is a fixture of the board (a clip, a peg): the
+        route lost it. Returns True (the graph changed).
+        """
+        g = self.gripper_index
+        points = self.graph.points
+        i = next(k for k, q in enumerate(points) if q is before)
+        left = [q for q in points[i + 1 : g] if q.kind in ("fixed", "contact")]
+        for q in left:
+            self.graph.remove_point(next(k for k, r in enumerate(self.graph.points) if r is q))
+        self._pending = None
+        self._consistent = 0
+        self.changes.append(self.iterations - 1)
+        self._filter_point = before
+        self._design = None if before.label == "estimated" else before.position.copy()
+        P = before.covariance if before.covariance is not None else DESIGN_TOLERANCE**2 * np.eye(3)
+        lines = list(self._recent)[-LEAVE_RUN:]
+        peg = self._round_contact()
+        if peg is not None:
+            self.contact_filter.restart(
+                [self._on_axis(p, q) for p, q in lines],
+                [q for _, q in lines],
+                prior_mean=before.position,
+                prior_covariance=P,
+                radius=(peg[2], RADIUS_STD),
+                consider_radius=True,
+            )
+        else:
+            self.contact_filter.restart(
+                [p for p, _ in lines],
+                [q for _, q in lines],
+                prior_mean=before.position,
+                prior_covariance=P,
+            )
+        fixtures = [q.label for q in left if q.label != "estimated"]
+        if fixtures:
+            raise FixtureLeftError(
+                f"the cable left {', '.join(fixtures)}: for {LEAVE_RUN} filter iterations its"
+                f" pull missed it and lined up with {before.label or 'the point'} before it"
+            )
+        return True
 
     def trust_limit(self, point: FeaturePoint | None = None) -> float:
         """Largest std [m] at which the model trusts an estimate of ``point`` (default its own).

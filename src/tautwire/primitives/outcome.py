@@ -13,6 +13,7 @@ CAUSES: tuple[str, ...] = (
     "timeout",  # the success criteria were not met in time
     "slipped",  # the cable left a gripper or the tension vanished unexpectedly
     "not_clipped",  # no snap was felt while pushing into a clip
+    "left_fixture",  # the cable left a fixture the model had it at (pulled out of a clip)
     "no_contact",  # no tension could be built: nothing holds the cable
     "precondition",  # the model's state does not allow the primitive (e.g. not held by two)
     "missed",  # a grasp closed on nothing

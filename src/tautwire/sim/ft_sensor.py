@@ -11,7 +11,10 @@ explicit sum of the equality's constraint force and ``mj_contactForce`` over
 the gripper's contacts.
 
 The sensor adds zero-mean Gaussian noise per axis from a seeded generator and
-is sampled once per control period.
+is sampled once per control period. What it samples is the mean of the
+period's physics steps (a sensor filtered at the control rate): the last
+step alone aliased the cable's vibration near the grasp, which the period's
+twist update excites at the control rate, into a steady false pull.
 """
 
 from __future__ import annotations

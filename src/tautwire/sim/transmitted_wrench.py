@@ -9,7 +9,8 @@ gripper geom); the tests check that both agree.
 
 Both return the force that the cable and the contacts exert on the gripper
 and the torque about the tool centre point (the gripper body's origin),
-world frame, for the state at the start of the last physics step.
+world frame, for the state at the start of the last physics step (the
+world averages the free joint's over a control period's steps).
 """
 
 from __future__ import annotations
