@@ -335,6 +335,8 @@ def _worker_main(conn: Connection, payload: bytes, log: Path | None) -> None:
     With ``log``, the worker's output goes to that file, a header line per trial.
     """
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C is the parent's to handle
+    if hasattr(signal, "pthread_sigmask"):  # born with it blocked (_sigint_ignored)
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
     for name in THREAD_VARIABLES:
         os.environ.setdefault(name, "1")
     if log is not None:
@@ -380,12 +382,26 @@ def _worker_main(conn: Connection, payload: bytes, log: Path | None) -> None:
 
 @contextmanager
 def _sigint_ignored() -> Iterator[None]:
-    """Ignore SIGINT while a child starts, so that it is born ignoring Ctrl-C.
+    """Hold SIGINT back while a child starts, so that it is born ignoring Ctrl-C.
 
-    A no-op outside the main thread (where signal handlers cannot be set).
+    Blocked, not ignored: the child inherits the blocked mask and ignores the
+    signal itself before it unblocks it (:func:`_worker_main`), while a
+    Ctrl-C that reaches the parent meanwhile stays pending and is delivered
+    when the start is over. Ignoring it lost it: a spawn takes up to a second
+    on a loaded machine, and a Ctrl-C in that time left the campaign running
+    to its end. Where signals cannot be blocked (not the main thread, no
+    ``pthread_sigmask``), SIGINT is ignored for the start as before, or left
+    alone outside the main thread.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
+        return
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+        try:
+            yield
+        finally:
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
         return
     previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
     try:
