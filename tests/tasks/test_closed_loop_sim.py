@@ -39,9 +39,9 @@ def run(seed: int, angle: float | None = None) -> tuple[list[str], np.ndarray, f
 
 @pytest.mark.slow
 def test_same_seed_same_result() -> None:
-    # a quarter turn tells a difference as well as a full one
-    a = run(seed=5, angle=1.5708)
-    b = run(seed=5, angle=1.5708)
+    # a short turn (and I's bias check after it) tells a difference as well as a full one
+    a = run(seed=5, angle=0.5)
+    b = run(seed=5, angle=0.5)
     assert a[0] == b[0]
     np.testing.assert_array_equal(a[1], b[1])
     assert a[2] == b[2]
