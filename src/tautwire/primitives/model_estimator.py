@@ -370,7 +370,8 @@ class ModelEstimator:
         #: :attr:`bias_suspect` (I holds still to check it) instead of ending
         #: the step: circling, pulls that do not scale with the tension arise
         #: without a bias too (random board 303464894's winding: 0.29 N, no
-        #: fault).
+        #: fault, read by the last-step sensor since replaced by the period's
+        #: mean, see ``tautwire.sim.ft_sensor``).
         self.defer_bias = False
         #: The bias the monitor found while :attr:`defer_bias`, until taken.
         self.bias_suspect: BiasEstimate | None = None

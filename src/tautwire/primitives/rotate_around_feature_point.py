@@ -79,8 +79,11 @@ class RotateAroundFeaturePoint(Primitive):
     for the same check before it turns on, up to ``SUSPECT_CHECKS`` times:
     the swing's monitor sees only the moving gripper's pull, and pulls
     that do not scale with the tension arise there without a bias (random
-    board 303464894's winding: 0.29-0.36 N, no fault; held still the pull
-    still showed 0.13 N there, a source not yet traced). Failure:
+    board 303464894's winding: 0.29-0.36 N, no fault, read when the
+    simulated wrist sampled only each period's last physics step; held
+    still it showed 0.13 N, that sampling's aliasing of the cable's
+    vibration near the grasp, 0.039 N with the period's mean, after which
+    that turn raised no suspicion). Failure:
     ``slipped`` if the tension stays below a fifth of its set point for
     ``slack_time`` after having been taut, or once the route to the fixed
     point is longer than an intact cable allows
