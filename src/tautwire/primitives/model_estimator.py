@@ -1007,7 +1007,7 @@ class ModelEstimator:
         it has none).
         """
         x = point.position.copy()
-        P = point.covariance if point.covariance is not None else DESIGN_TOLERANCE**2 * np.eye(3)
+        P = _covariance_or_design(point)
         if point.label in self.round_fixtures:
             radius = self.round_fixtures[point.label][1]
             u = f / max(norm3(f), 1e-12)
@@ -1017,18 +1017,23 @@ class ModelEstimator:
             distance = norm3(to_axis)
             if distance > 1e-9:
                 x -= min(radius, distance) * to_axis / distance
-        return x, np.asarray(P, dtype=float)
+        return x, P
 
     def _line_test(
         self, point: FeaturePoint, p_line: FloatArray, f: FloatArray
-    ) -> tuple[float, float]:
-        """How the line through ``p_line`` along ``f`` misses ``point``: (NIS, distance [m])."""
+    ) -> tuple[float, float, FloatArray]:
+        """How the line through ``p_line`` along ``f`` misses ``point``.
+
+        Returns:
+            The change test's NIS, the distance [m] from the line to where it
+            would touch the point (:meth:`_nearest_to_line`), and that place.
+        """
         x, P = self._nearest_to_line(point, p_line, f)
         state = FilterState(True, x, P, None, np.zeros(3), 0.0)
         nis, _ = self.contact_filter.line_test(state, p_line, f)
         u = f / max(norm3(f), 1e-12)
         w = x - p_line
-        return nis, norm3(w - float(w @ u) * u)
+        return nis, norm3(w - float(w @ u) * u), x
 
     def _watch_leave(self, p_line: FloatArray, f: FloatArray) -> bool:
         """Count lines that say the cable left its contact; True once it has (graph changed).
@@ -1050,11 +1055,9 @@ class ModelEstimator:
         says = False
         if before is not None and c is not None:
             contact = self.graph.points[c]
-            nis_c, miss_c = self._line_test(contact, p_line, f)
+            nis_c, miss_c, x_c = self._line_test(contact, p_line, f)
             if miss_c > LEAVE_MARGIN:
-                nis_b, _ = self._line_test(before, p_line, f)
-                x_c, _ = self._nearest_to_line(contact, p_line, f)
-                x_b, _ = self._nearest_to_line(before, p_line, f)
+                nis_b, _, x_b = self._line_test(before, p_line, f)
                 u = (x_c - p_line) / max(norm3(x_c - p_line), 1e-12)
                 w = x_b - p_line
                 apart = norm3(w - float(w @ u) * u)
@@ -1088,7 +1091,7 @@ class ModelEstimator:
         self.changes.append(self.iterations - 1)
         self._filter_point = before
         self._design = None if before.label == "estimated" else before.position.copy()
-        P = before.covariance if before.covariance is not None else DESIGN_TOLERANCE**2 * np.eye(3)
+        P = _covariance_or_design(before)
         lines = list(self._recent)[-LEAVE_RUN:]
         peg = self._round_contact()
         if peg is not None:
@@ -1593,6 +1596,13 @@ class ModelEstimator:
             edge = self.graph.edges[g - 1 if c < g else g]
             edge.tension = self.state.tension
             edge.stiffness = self.elasticity.k_hat
+
+
+def _covariance_or_design(point: FeaturePoint) -> FloatArray:
+    """The point's covariance [m^2], or the design's tolerance where it has none."""
+    if point.covariance is not None:
+        return np.asarray(point.covariance, dtype=float)
+    return DESIGN_TOLERANCE**2 * np.eye(3)
 
 
 def _plane_projector(axis: FloatArray) -> FloatArray:
