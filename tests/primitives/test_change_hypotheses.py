@@ -251,3 +251,50 @@ def test_a_cable_pulled_out_of_its_clip_drops_the_clip(leaves: bool) -> None:
     else:
         assert report.success, report
         assert labels == ["A1", "C1", "left"]
+
+
+UNSEEN_PEG = np.array([0.25, 0.026, 0.1])  # the design peg's axis point
+UNSEEN_TOUCH = np.array([0.25, 0.02, 0.1])  # where the cable bears on it (radius 6 mm)
+
+
+def _unseen_context():  # type: ignore[no-untyped-def]
+    from tautwire.primitives import make_context
+    from tests.primitives.conftest import graph_for
+
+    return make_context(
+        graph_for(),
+        "left",
+        k_initial=100.0,
+        estimation_period=0.04,
+        round_fixtures={"P1": (UNSEEN_PEG.copy(), 0.006)},
+    )
+
+
+@pytest.mark.parametrize("anchor_trusted", [False, True])
+def test_a_peg_the_cable_was_swept_onto_unobserved_joins_the_model(anchor_trusted: bool) -> None:
+    # random board 483199372: a move that sweeps the cable onto a peg does
+    # not observe; the next lines meet at the peg, 20 mm beside the span of
+    # the last fitting line, so the straight-span test refused F1 (anchor
+    # trusted), or the anchor's own untrusted filter converged on F4 and
+    # nothing was declared (anchor never trusted): I then turned about a peg
+    # the model did not hold, and the run ended with the lines fitting nothing
+    from tautwire.primitives.move import Move
+
+    robot = SpringCableRobot(
+        CONTACT, GRIPPER, 200.0, seed=31, second_contact=UNSEEN_TOUCH, switch_on_chord=True
+    )
+    ctx = _unseen_context()
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    if anchor_trusted:  # a circle about the anchor: its estimate is trusted
+        circle = RotateAroundFeaturePoint("left", 2 * math.pi, speed=0.5)
+        assert run_step(robot, circle, ctx).success
+        assert ctx.estimator._was_trusted(ctx.estimator.contact_filter.snapshot())
+    robot.switch_time = robot.time  # from now on the chord catches the peg
+    assert run_step(robot, Move("left", by=[0.0, 0.08, 0.0], observe=False), ctx).success
+    assert np.allclose(robot.contact, UNSEEN_TOUCH)  # the cable bears on the peg now
+    assert [p.label for p in ctx.graph.points] == ["A1", "left"]
+    assert run_step(robot, Move("left", by=[0.0, 0.09, 0.0]), ctx).success
+    labels = [p.label for p in ctx.graph.points]
+    assert labels == ["A1", "P1", "left"], labels
+    peg = ctx.graph.points[1]
+    assert np.linalg.norm((peg.position - UNSEEN_PEG)[:2]) < 0.01

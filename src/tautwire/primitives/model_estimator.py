@@ -134,6 +134,10 @@ MIN_AHEAD = 0.02
 #: A candidate lies within this distance [m] (plus three std, plus a design
 #: peg's radius) of the taut span as it was when the change began.
 SEGMENT_TOLERANCE = 0.005
+#: The gripper moved this far [m] while the filter took no lines (a move
+#: that sweeps the cable onto a peg on purpose): the taut span of the last
+#: fitting line is not the one the next change starts from.
+UNSEEN_MOTION = 0.005
 #: The route through a candidate may differ from the cable's length by this
 #: much [m], plus a fraction of it, plus the stretch of the tension's change
 #: and ``ROUTE_FRICTION`` of the stretch at the tension (friction at the new
@@ -232,6 +236,10 @@ class ChangeHypothesis:
             last line that fitted the previous contact) [m].  # (3,)
         end: The previous contact [m].  # (3,)
         tension: The tension [N] then.
+        unseen: The span changed while the filter took no lines (the
+            gripper moved ``UNSEEN_MOTION`` or more since its last line):
+            where the span ran when the change began is unknown, and the
+            change is taken only at a peg of the board design.
     """
 
     previous: FilterState
@@ -242,6 +250,7 @@ class ChangeHypothesis:
     start: FloatArray = field(default_factory=lambda: np.zeros(3))
     end: FloatArray = field(default_factory=lambda: np.zeros(3))
     tension: float = 0.0
+    unseen: bool = False
 
 
 @dataclass
@@ -394,6 +403,8 @@ class ModelEstimator:
         self._consistent = 0  # iterations in a row whose line fitted the accepted contact
         self._unresolved_run = 0
         self._last_fitting: FloatArray | None = None  # line point of the last fused sample
+        self._observed_at: FloatArray | None = None  # gripper [m] at the filter's last line
+        self._unseen = False  # the gripper moved since then with no lines taken
         #: The slowly followed pull [N] of the filter's samples.
         self._pull_level: LowPass[float] = LowPass(PULL_LEVEL_TIME)
 
@@ -861,7 +872,18 @@ class ModelEstimator:
         if not self.observe_contacts:
             kf.predict()  # time passes, nothing is observed
             self._iteration_time = None
+            if (
+                not self._unseen
+                and self._observed_at is not None
+                and norm3(p_mean - self._observed_at) > UNSEEN_MOTION
+            ):
+                # the span moves unseen: its last fitting line is history,
+                # and so are an untrusted estimate's lines
+                self._unseen = True
+                self._last_fitting = None
+                self._forget_untrusted()
             return False
+        self._observed_at = p_mean
         peg = self._round_contact()
         previous_time, self._iteration_time = self._iteration_time, time
         point = self._filter_point
@@ -904,6 +926,8 @@ class ModelEstimator:
             return True
         if self._pending is not None:
             return self._judge_change(p_line, f_mean)
+        if self._met_at_peg(p_line, f_mean):
+            return True
         if (
             result.changed
             and result.estimate is not None
@@ -921,8 +945,10 @@ class ModelEstimator:
             start = self._last_fitting if self._last_fitting is not None else p_line
             self._pending.start, self._pending.end = start.copy(), old.copy()
             self._pending.tension = self.state.tension if self.state is not None else 0.0
+            self._pending.unseen = self._unseen
             return False
         if result.used:
+            self._unseen = False
             self._last_fitting = p_line
             self._consistent += 1
             if self._consistent >= CONFIRMED_RUN:
@@ -980,6 +1006,66 @@ class ModelEstimator:
                     " force lines fitted neither the known contact nor any new point: a drifting"
                     " force-torque sensor bias, or a contact the model cannot describe"
                 )
+        return False
+
+    def _forget_untrusted(self) -> None:
+        """Restart the filter if its estimate was never trusted (the span moved unseen).
+
+        Its lines may have come from another contact than the next ones: a
+        tension's parallel lines from the anchor and the lines from a peg the
+        cable was swept onto meet at neither (a test's anchor filter put the
+        point where the peg's lines crossed the anchor's, 100 mm from both).
+        A trusted estimate is kept: a change from it is tested as a
+        hypothesis. A peg of the design restarts from its design.
+        """
+        kf = self.contact_filter
+        if kf.running and self._was_trusted(kf.snapshot()):
+            return
+        point = self._filter_point
+        if self._design is not None and point is not None and point.label in self.round_fixtures:
+            kf.start(self._design, DESIGN_TOLERANCE**2 * np.eye(3))
+        else:
+            kf.reset()
+
+    def _met_at_peg(self, p_line: FloatArray, f: FloatArray) -> bool:
+        """Whether the lines for a fixed point of the design meet at a peg of the design instead.
+
+        A point whose estimate was never trusted (an anchor seen only by a
+        tension's parallel lines) has no contact to change from: the lines
+        that follow are its filter's convergence. When the cable came to
+        bear on a peg in between meanwhile (a sweep onto it, unobserved),
+        they converge there. An estimate trusted in its variance but further
+        than ``DESIGN_GATE`` from the point's design, within the peg's radius
+        plus 20 mm of a peg of the design that the model does not hold, at
+        least ``MIN_AHEAD`` in front of the gripper: the cable bears on that
+        peg, which becomes the contact (random board 483199372's F4: the
+        filter of A2 converged on F4 and I timed out turning about it). True
+        if the graph changed.
+        """
+        point = self._filter_point
+        kf = self.contact_filter
+        if point is None or self._design is None or point.label in self.round_fixtures:
+            return False
+        if not kf.running:
+            return False
+        state = kf.snapshot()
+        x = state.x
+        if norm3(x - self._design) <= DESIGN_GATE:
+            return False
+        if self._largest_variance(state) > self.trusted_std**2:
+            return False
+        if float((x - p_line) @ f) / norm3(f) < MIN_AHEAD:
+            return False
+        held = {q.label for q in self.graph.points}
+        for name, (axis_point, radius) in self.round_fixtures.items():
+            if name in held or float(np.linalg.norm((x - axis_point)[:2])) > radius + 0.02:
+                continue
+            if not self._add_contact(x.copy(), p_line):
+                return False
+            self.changes.append(self.iterations - 1)
+            self._consistent = 0
+            self._unseen = False
+            return True
         return False
 
     def _point_left_for(self) -> FeaturePoint | None:
@@ -1088,6 +1174,7 @@ class ModelEstimator:
             self.graph.remove_point(next(k for k, r in enumerate(self.graph.points) if r is q))
         self._pending = None
         self._consistent = 0
+        self._unseen = False
         self.changes.append(self.iterations - 1)
         self._filter_point = before
         self._design = None if before.label == "estimated" else before.position.copy()
@@ -1175,8 +1262,9 @@ class ModelEstimator:
         prior: its lines must spread ``HYPOTHESIS_SPREAD``, fit one point
         (chi-square within three of its standard deviations of the degrees of
         freedom), to within ``HYPOTHESIS_STD``, in front of the gripper, on
-        the taut span as it was when the change began and without changing
-        the cable's length.
+        the taut span as it was when the change began (for an unseen change,
+        at a peg of the design instead) and without changing the cable's
+        length.
         """
         kf = self.contact_filter
         ps = np.array([p for p, _ in h.lines])
@@ -1213,11 +1301,17 @@ class ModelEstimator:
             ),
             default=0.0,
         )
-        nearest = _nearest_on_segment(x, h.start, h.end)
-        aside = norm3(x - nearest)
-        n = (x - nearest) / max(aside, 1e-12)
-        if aside > SEGMENT_TOLERANCE + 3.0 * math.sqrt(float(n @ P @ n)) + peg:
-            return None
+        if h.unseen:
+            # the span came to bear on it unseen (a sweep onto a peg): where
+            # it ran then is unknown; only a peg of the design is taken
+            if peg <= 0.0:
+                return None
+        else:
+            nearest = _nearest_on_segment(x, h.start, h.end)
+            aside = norm3(x - nearest)
+            n = (x - nearest) / max(aside, 1e-12)
+            if aside > SEGMENT_TOLERANCE + 3.0 * math.sqrt(float(n @ P @ n)) + peg:
+                return None
         # the cable does not change length: under the same tension the route
         # through the candidate is as long as the straight span was (give or
         # take the stretch of the tension's change, and of the friction at
