@@ -297,4 +297,4 @@ def test_a_peg_the_cable_was_swept_onto_unobserved_joins_the_model(anchor_truste
     labels = [p.label for p in ctx.graph.points]
     assert labels == ["A1", "P1", "left"], labels
     peg = ctx.graph.points[1]
-    assert np.linalg.norm((peg.position - UNSEEN_PEG)[:2]) < 0.01
+    assert np.linalg.norm((peg.position - UNSEEN_PEG)[:2]) < 0.003  # its axis, not its side
