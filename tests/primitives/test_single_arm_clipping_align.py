@@ -55,3 +55,27 @@ def test_the_push_waits_for_the_line_to_pass_over_the_seat() -> None:
     assert f._aligned(along, target)
     # but never farther than the tolerance from the set point
     assert not f._aligned(target + np.array([0.004, 0.0, 0.0]), target)
+
+
+def test_the_far_contact_moves_onto_the_measured_line() -> None:
+    # random board 360400295's F5: the stiff cable leaves F4 bent by 50 deg,
+    # and its straight span runs 4 mm beside F4's exit, the model's contact;
+    # aligned on the model's line, F pushed the cable 4 mm beside the seat
+    f = _aligning(np.zeros(3))
+    pivot = CONTACT + np.array([0.0, 0.004, 0.0])  # where the real span's line comes from
+    leaves = np.array([0.45, 0.02, 0.12])
+    pull = (pivot - leaves) / np.linalg.norm(pivot - leaves)
+    for k in range(100):
+        f._line_shift = f._measured_shift(0.004 * k, leaves, pull)
+    assert np.linalg.norm(f._line_shift - np.array([0.0, 0.004, 0.0])) < 2e-4
+    target = f._target(_obs(leaves), None)  # type: ignore[arg-type]
+    through = SEAT + np.array([0.0, 0.0, ABOVE])
+    flat = np.array([1.0, 1.0, 0.0])
+    w = (through - pivot) * flat
+    # the real span's line from where the cable leaves the fingers passes over the seat
+    assert np.linalg.norm(np.cross((target - pivot) * flat, w)) / np.linalg.norm(w) < 5e-4
+    # a line 2 cm beside is not this span (it bears on something else): no shift
+    g = _aligning(np.zeros(3))
+    far = CONTACT + np.array([0.0, 0.02, 0.0])
+    shift = g._measured_shift(0.0, leaves, (far - leaves) / np.linalg.norm(far - leaves))
+    assert np.allclose(shift, 0.0)

@@ -64,6 +64,9 @@ FLOOR_REACHED = 0.002
 TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
 EXIT_TIME = 0.2
+#: Largest shift [m] of the far contact, across the line, that the measured
+#: pull may make while aligning (beyond it the line bears on something else).
+MAX_LINE_SHIFT = 0.01
 
 
 class SingleArmClipping(Primitive):
@@ -128,6 +131,8 @@ class SingleArmClipping(Primitive):
         self.phase = "align"
         self.angle = 0.0  # how far [rad] the gripper has pivoted below the clip
         self.press = 0.0  # the press [N] on the clip planned for the push tension
+        self._line_shift = np.zeros(3)  # the far contact onto the measured line [m]
+        self._line_shift_filter: LowPass[np.ndarray] = LowPass(EXIT_TIME)
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Check the clip against the model; plan the pivot plane."""
@@ -150,6 +155,8 @@ class SingleArmClipping(Primitive):
         self._slack = SlackWatch(1.0)
         self._exit_offset: LowPass[np.ndarray] = LowPass(EXIT_TIME)
         self._offset = np.zeros(3)
+        self._line_shift_filter = LowPass(EXIT_TIME)
+        self._line_shift = np.zeros(3)
         self._tug = ClipTug(np.array([1.0, 0.0, 0.0]))  # its plane is set when the push starts
         self._tug_reading: TugReading | None = None
         self._reached: float | None = None
@@ -273,6 +280,30 @@ class SingleArmClipping(Primitive):
         self.press = plan.press(force)
         return force
 
+    def _measured_shift(self, time: float, leaves: np.ndarray, direction: np.ndarray) -> np.ndarray:
+        """How far [m] the measured line passes beside the far contact, horizontally.
+
+        The taut span is straight from where it leaves the fingers along the
+        pull. A stiff cable bent sharply where it leaves a clip, or a peg
+        estimated a few mm off, puts that line beside the model's contact c:
+        random board 360400295's F5, 50 deg on from F4, was pushed with the
+        cable 4 mm beside its seat while the line from c passed over it. The
+        shift (low-passed over ``EXIT_TIME``, at most ``MAX_LINE_SHIFT``) moves
+        c onto the measured line for the alignment; nothing changes while the
+        pull is too short to tell a direction.
+        """
+        d = np.array([direction[0], direction[1], 0.0])
+        size = float(np.linalg.norm(d))
+        if size < 0.5:  # the pull runs mostly vertically: no horizontal line
+            return self._line_shift
+        d /= size
+        n = np.array([-d[1], d[0], 0.0])
+        away = self._contact - leaves
+        shift: np.ndarray = -float(away @ n) * n
+        if float(np.linalg.norm(shift)) > MAX_LINE_SHIFT:
+            return self._line_shift
+        return self._line_shift_filter.update(time, shift)
+
     def _target(self, obs: Observation, state: TensionState) -> np.ndarray:
         """The gripper's set point while aligning: the cable's exit on the line over the clip.
 
@@ -281,7 +312,7 @@ class SingleArmClipping(Primitive):
         centre point after a regrip (E, B) or a hand-over: that point, not
         the tool centre point, goes onto the line.
         """
-        c = self._contact
+        c = self._contact + self._line_shift  # on the measured line
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
         w = (through - c) / float(np.linalg.norm(through - c))
         exit_point = obs.gripper(self.arm).position + self._offset
@@ -298,7 +329,7 @@ class SingleArmClipping(Primitive):
         error = me - target
         if float(np.linalg.norm(error)) >= ALIGN_TOLERANCE:
             return False
-        c = self._contact
+        c = self._contact + self._line_shift  # on the measured line
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
         w = through - c
         w[2] = 0.0
@@ -336,6 +367,8 @@ class SingleArmClipping(Primitive):
         leaves = line_point(me.position, wrench.force, wrench.torque)
         if state.taut:
             self._offset = self._exit_offset.update(obs.time, leaves - me.position)
+            if self.phase == "align":
+                self._line_shift = self._measured_shift(obs.time, leaves, state.direction)
         height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
         if self.phase in ("lift", "tug"):
             self._tug.update(obs.time, wrench.force)
