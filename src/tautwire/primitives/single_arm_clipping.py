@@ -79,6 +79,8 @@ class SingleArmClipping(Primitive):
     tension leaves) until the cable's straight line passes ``ABOVE`` over
     the clip's seat q, along the slot: where the cable leaves the fingers
     (on the force's line of action, :meth:`_target`) goes onto the line,
+    which runs from c moved across onto the measured pull's line
+    (:meth:`_measured_shift`: a stiff cable bent at c leaves it beside c),
     and the push starts once the line passes within ``ALIGN_MISS`` of the
     seat (:meth:`_aligned`); then it pivots down about the clip's
     exit at ``PUSH_RATE``, with the tension raised to three times the clip's
