@@ -298,3 +298,51 @@ def test_a_peg_the_cable_was_swept_onto_unobserved_joins_the_model(anchor_truste
     assert labels == ["A1", "P1", "left"], labels
     peg = ctx.graph.points[1]
     assert np.linalg.norm((peg.position - UNSEEN_PEG)[:2]) < 0.003  # its axis, not its side
+
+
+@pytest.mark.parametrize("caught", [True, False])
+def test_a_caught_peg_enters_the_model_and_the_lines_keep_or_drop_it(caught: bool) -> None:
+    # the planner's catch (move with catch=P1): the swept peg enters the
+    # model at its design, untrusted; the circle after it estimates the peg
+    # where the cable bears on it, or drops it where the cable missed it and
+    # its lines fit the anchor again
+    from tautwire.primitives.move import Move
+
+    robot = SpringCableRobot(
+        CONTACT, GRIPPER, 200.0, seed=37, second_contact=UNSEEN_TOUCH, switch_on_chord=True
+    )
+    ctx = _unseen_context()
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    if caught:
+        robot.switch_time = robot.time  # from now on the chord catches the peg
+    move = Move("left", by=[0.0, 0.08, 0.0], observe=False, catch="P1")
+    report = run_step(robot, move, ctx)
+    assert report.success and "P1 taken as the contact" in report.detail, report
+    assert [p.label for p in ctx.graph.points] == ["A1", "P1", "left"]
+    peg = ctx.graph.points[1]
+    assert np.linalg.norm((peg.position - UNSEEN_PEG)[:2]) < 1e-9  # at its design
+    assert ctx.estimator.contact_estimate() is not None
+    assert not ctx.estimator.contact_estimate().trusted  # as uncertain as the design
+    assert not ctx.estimator.catch_peg("P1", robot.p)  # held already: no change
+    circle = RotateAroundFeaturePoint("left", 0.6, speed=0.3)
+    report = run_step(robot, circle, ctx)
+    labels = [p.label for p in ctx.graph.points]
+    if caught:
+        assert np.allclose(robot.contact, UNSEEN_TOUCH)
+        assert labels == ["A1", "P1", "left"], labels
+        assert np.linalg.norm((ctx.graph.points[1].position - UNSEEN_PEG)[:2]) < 0.01
+    else:
+        assert np.allclose(robot.contact, CONTACT)  # the cable never bore on the peg
+        assert labels == ["A1", "left"], (labels, report)
+
+
+def test_catching_a_fixture_that_is_no_peg_is_refused() -> None:
+    from tautwire.errors import InvalidArgumentError
+    from tautwire.primitives.move import Move
+
+    robot = SpringCableRobot(CONTACT, GRIPPER, 200.0, seed=3)
+    ctx = _unseen_context()
+    report = run_step(robot, Move("left", by=[0.0, 0.01, 0.0], catch="A1"), ctx)
+    assert report.cause == "precondition" and "A1 is not a peg" in report.detail, report
+    with pytest.raises(InvalidArgumentError, match="not a peg of the board design"):
+        ctx.estimator.catch_peg("C9", robot.p)

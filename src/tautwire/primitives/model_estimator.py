@@ -1027,6 +1027,63 @@ class ModelEstimator:
         else:
             kf.reset()
 
+    def catch_peg(self, name: str, p_gripper: FloatArray) -> bool:
+        """Take the design peg ``name`` as the contact: a move swept the cable onto it unobserved.
+
+        A planned catch (``move`` with ``catch``) makes the cable bear on a
+        peg while the filter takes no lines. The peg enters the path graph
+        between the contact and the gripper at its design position, at the
+        height where the straight span from the contact to the gripper
+        passes its axis, with the design's uncertainty (untrusted), and the
+        filter restarts from there. The lines of the next primitive then
+        estimate it, and drop it again if they fit the point before it (the
+        cable missed the peg, ``_watch_leave``). Left to the lines alone,
+        the first ones of the winding that follows met 22-40 mm along the
+        span from the peg at a reported 3 mm std (the shipped harness's P2:
+        the free tail's drag builds up as the gripper starts to circle and
+        turns the pull faster than the geometry does), too far to be taken
+        as the peg, and the winding failed with ``sensor_bias``.
+
+        Args:
+            name: A peg of the board design (``round_fixtures``).
+            p_gripper: The sensing gripper's position [m].  # (3,)
+
+        Returns:
+            True if the graph changed (False: the model holds the peg
+            already, or there is no contact before the gripper).
+
+        Raises:
+            InvalidArgumentError: ``name`` is not a peg of the design.
+        """
+        if name not in self.round_fixtures:
+            raise InvalidArgumentError(
+                f"cannot catch {name!r}: not a peg of the board design "
+                f"(pegs: {', '.join(sorted(self.round_fixtures)) or 'none'})"
+            )
+        if any(q.label == name for q in self.graph.points):
+            return False
+        c = self.contact_index
+        if c is None:
+            return False
+        before = self.graph.points[c].position
+        axis_point = np.asarray(self.round_fixtures[name][0], dtype=float)
+        run = (p_gripper - before)[:2]
+        t = float(np.clip((axis_point - before)[:2] @ run / max(float(run @ run), 1e-12), 0, 1))
+        estimate = axis_point.copy()
+        estimate[2] = float(before[2] + t * (p_gripper[2] - before[2]))
+        if not self._add_contact(estimate, p_gripper):
+            return False
+        assert self._filter_point is not None
+        self.contact_filter.start(
+            self._filter_point.position.copy(), DESIGN_TOLERANCE**2 * np.eye(3)
+        )
+        self.changes.append(self.iterations - 1)
+        self._pending = None
+        self._consistent = 0
+        self._unseen = False
+        self._last_fitting = None
+        return True
+
     def _met_at_peg(self, p_line: FloatArray, f: FloatArray) -> bool:
         """Whether the lines for a fixed point of the design meet at a peg of the design instead.
 

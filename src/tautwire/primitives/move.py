@@ -50,7 +50,11 @@ class Move(Primitive):
     context's sensing gripper (its force is what keeps the tension).
     Model edits: none (the estimator maps the gripper's new position onto
     the path graph; contacts the cable comes to bear on are found as in
-    every primitive, unless ``observe`` is off).
+    every primitive, unless ``observe`` is off), except with ``catch``: on
+    success the named peg enters the model as the sensing gripper's
+    contact, at its design position and as uncertain as the design
+    (:meth:`~tautwire.primitives.model_estimator.ModelEstimator.catch_peg`),
+    for the next primitive's lines to estimate or drop.
 
     Success: the position error (with ``taut``: its part across the
     cable) is within ``tolerance``, the orientation within
@@ -75,6 +79,8 @@ class Move(Primitive):
             holds too slowly for a change to show, and would pull its
             estimate off; the primitive after the move estimates the new
             contact.
+        catch: The peg of the board design that the move sweeps the
+            cable onto (the planner's catch, with ``observe`` off).
     """
 
     name = "move"
@@ -92,6 +98,7 @@ class Move(Primitive):
         angle_tolerance: float = math.radians(2.0),
         timeout: float | None = None,
         observe: bool = True,
+        catch: str | None = None,
     ) -> None:
         super().__init__(20.0 if timeout is None else timeout)
         if arm not in ("left", "right"):
@@ -115,6 +122,7 @@ class Move(Primitive):
         self.angle_tolerance = float(angle_tolerance)
         self._own_timeout = timeout is None
         self.observe = bool(observe)
+        self.catch = catch
         self.target = np.zeros(3)
         self.error = math.inf  # remaining position error [m] (across the cable when taut)
         self._holds = False
@@ -137,6 +145,11 @@ class Move(Primitive):
                 "precondition",
                 f"the {self.arm} gripper holds the cable but does not sense it "
                 f"(the {est.arm} gripper does): it cannot keep it taut",
+            )
+            return
+        if self.catch is not None and self.catch not in est.round_fixtures:
+            self.outcome = Outcome.failure(
+                "precondition", f"{self.catch} is not a peg of the board design: nothing to catch"
             )
             return
         if not self.observe:
@@ -181,7 +194,14 @@ class Move(Primitive):
         )
         if self.error <= self.tolerance and turn <= self.angle_tolerance and taut_enough:
             how = " across the cable, taut" if self.keeps_tension else ""
+            caught = ""
+            if (
+                self.catch is not None
+                and self._sensing
+                and ctx.estimator.catch_peg(self.catch, me.position)
+            ):
+                caught = f"; {self.catch} taken as the contact at its design, to be estimated"
             self.outcome = Outcome.success(
-                f"the {self.arm} gripper is {1e3 * self.error:.1f} mm from its target{how}"
+                f"the {self.arm} gripper is {1e3 * self.error:.1f} mm from its target{how}{caught}"
             )
         return Command(twist)

@@ -304,6 +304,11 @@ MOVES: tuple[PrimitiveSpec, ...] = (
                 "let the contact filter take the move's force lines (off: sweeping onto a peg)",
                 default=True,
             ),
+            ParamSpec(
+                "catch",
+                "fixture",
+                "the peg the move sweeps the cable onto: the model takes it as the contact",
+            ),
         ),
         one_of=("to", "by"),
     ),

@@ -856,6 +856,8 @@ class _Planner:
                     cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True
                 )
             else:
+                # the last move of the catch hands the peg to the model
+                catches = k == len(motion.moves) - 1
                 self.emit(
                     cable,
                     "move",
@@ -864,6 +866,7 @@ class _Planner:
                     to=[float(v) for v in point],
                     taut=True,
                     observe=False,
+                    **({"catch": peg.name} if catches else {}),
                 )
         cable.gripper = motion.catch
         rest = motion.rest
