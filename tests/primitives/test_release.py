@@ -75,3 +75,33 @@ def test_fingers_that_do_not_open_end_the_release_by_timeout_and_keep_the_model(
     report = run_step(_Fingers(opens=False), Release("right"), ctx)
     assert report.cause == "timeout"
     assert ctx.graph.index_of("gripper", "right") == 2
+
+
+def test_a_cable_no_gripper_holds_keeps_no_peg_height() -> None:
+    # random board 2082005138: W1, wound round F2 at 94 mm and let go after
+    # its last clip, slid down F2 to 27 mm; the model's F2 kept a trusted
+    # height. With no gripper left, a peg's height is known only to lie
+    # above the board; with the other gripper still holding, it is kept.
+    peg = np.array([0.25, 0.05, 0.09])
+    clip = np.array([0.35, 0.1, 0.08])
+
+    def graph(arms: list[str]) -> PathGraph:
+        points = [CONTACT, peg, clip] + [GRIPPER + 0.05 * k for k in range(len(arms))]
+        g = PathGraph.from_positions(
+            points,
+            mass_per_length=0.03,
+            kinds=["fixed", "contact", "fixed"] + ["gripper"] * len(arms),
+            labels=["A1", "P1", "C1", *arms],
+        )
+        g.points[1].covariance = (0.004**2) * np.eye(3)
+        return g
+
+    positions = {"left": GRIPPER, "right": GRIPPER + 0.05}
+    alone = graph(["left"])
+    assert release_point(alone, "left", positions)
+    std = np.sqrt(np.diag(alone.points[1].covariance))
+    assert np.allclose(std[:2], 0.004) and std[2] >= 0.09 - 1e-9  # down to the board
+    assert alone.points[2].covariance is None  # a clip holds its cable where it is
+    handed = graph(["left", "right"])
+    assert release_point(handed, "left", positions)
+    assert np.allclose(handed.points[1].covariance, (0.004**2) * np.eye(3))

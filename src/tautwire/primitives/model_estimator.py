@@ -405,6 +405,8 @@ class ModelEstimator:
         self._last_fitting: FloatArray | None = None  # line point of the last fused sample
         self._observed_at: FloatArray | None = None  # gripper [m] at the filter's last line
         self._unseen = False  # the gripper moved since then with no lines taken
+        #: A peg a planned catch swept the cable onto, and the gripper [m] then.
+        self._expected: tuple[str, FloatArray] | None = None
         #: The slowly followed pull [N] of the filter's samples.
         self._pull_level: LowPass[float] = LowPass(PULL_LEVEL_TIME)
 
@@ -884,6 +886,10 @@ class ModelEstimator:
                 self._forget_untrusted()
             return False
         self._observed_at = p_mean
+        if self._expected is not None and norm3(p_mean - self._expected[1]) > UNSEEN_MOTION:
+            name, self._expected = self._expected[0], None
+            if self.catch_peg(name, p_mean):
+                return True
         peg = self._round_contact()
         previous_time, self._iteration_time = self._iteration_time, time
         point = self._filter_point
@@ -1027,11 +1033,41 @@ class ModelEstimator:
         else:
             kf.reset()
 
+    def expect_peg(self, name: str, p_gripper: FloatArray) -> None:
+        """A planned catch swept the cable onto the peg ``name``: take it once lines can judge it.
+
+        The catch itself is not seen (the move takes no lines) and may fall
+        short (random board 2082005138's sweep onto F5 left the cable beside
+        it; the winding after it brought it on). The peg enters the model
+        (:meth:`catch_peg`) at the first observed iteration after the
+        gripper moved ``UNSEEN_MOTION`` from ``p_gripper``, so the primitive
+        whose lines then estimate it, or drop it where the cable is not on
+        it, is the one that claims it; a gripper alignment, turning in
+        place, claims nothing.
+
+        Args:
+            name: A peg of the board design (``round_fixtures``).
+            p_gripper: The sensing gripper's position [m] at the catch.  # (3,)
+
+        Raises:
+            InvalidArgumentError: ``name`` is not a peg of the design.
+        """
+        self._check_peg(name)
+        self._expected = (name, np.asarray(p_gripper, dtype=float).copy())
+
+    def _check_peg(self, name: str) -> None:
+        if name not in self.round_fixtures:
+            raise InvalidArgumentError(
+                f"cannot catch {name!r}: not a peg of the board design "
+                f"(pegs: {', '.join(sorted(self.round_fixtures)) or 'none'})"
+            )
+
     def catch_peg(self, name: str, p_gripper: FloatArray) -> bool:
         """Take the design peg ``name`` as the contact: a move swept the cable onto it unobserved.
 
-        A planned catch (``move`` with ``catch``) makes the cable bear on a
-        peg while the filter takes no lines. The peg enters the path graph
+        A planned catch (``move`` with ``catch``, :meth:`expect_peg`) makes
+        the cable bear on a peg while the filter takes no lines. The peg
+        enters the path graph
         between the contact and the gripper at its design position, at the
         height where the straight span from the contact to the gripper
         passes its axis, with the design's uncertainty (untrusted), and the
@@ -1055,11 +1091,7 @@ class ModelEstimator:
         Raises:
             InvalidArgumentError: ``name`` is not a peg of the design.
         """
-        if name not in self.round_fixtures:
-            raise InvalidArgumentError(
-                f"cannot catch {name!r}: not a peg of the board design "
-                f"(pegs: {', '.join(sorted(self.round_fixtures)) or 'none'})"
-            )
+        self._check_peg(name)
         if any(q.label == name for q in self.graph.points):
             return False
         c = self.contact_index

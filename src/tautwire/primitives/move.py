@@ -52,9 +52,10 @@ class Move(Primitive):
     the path graph; contacts the cable comes to bear on are found as in
     every primitive, unless ``observe`` is off), except with ``catch``: on
     success the named peg enters the model as the sensing gripper's
-    contact, at its design position and as uncertain as the design
-    (:meth:`~tautwire.primitives.model_estimator.ModelEstimator.catch_peg`),
-    for the next primitive's lines to estimate or drop.
+    contact, at its design position and as uncertain as the design, once
+    the gripper moves on with its lines observed (the next primitive's
+    lines estimate it or drop it:
+    :meth:`~tautwire.primitives.model_estimator.ModelEstimator.expect_peg`).
 
     Success: the position error (with ``taut``: its part across the
     cable) is within ``tolerance``, the orientation within
@@ -195,12 +196,9 @@ class Move(Primitive):
         if self.error <= self.tolerance and turn <= self.angle_tolerance and taut_enough:
             how = " across the cable, taut" if self.keeps_tension else ""
             caught = ""
-            if (
-                self.catch is not None
-                and self._sensing
-                and ctx.estimator.catch_peg(self.catch, me.position)
-            ):
-                caught = f"; {self.catch} taken as the contact at its design, to be estimated"
+            if self.catch is not None and self._sensing:
+                ctx.estimator.expect_peg(self.catch, me.position)
+                caught = f"; {self.catch} expected as the contact once the gripper moves on"
             self.outcome = Outcome.success(
                 f"the {self.arm} gripper is {1e3 * self.error:.1f} mm from its target{how}{caught}"
             )

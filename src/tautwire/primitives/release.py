@@ -34,7 +34,13 @@ def release_point(graph: PathGraph, arm: Arm, positions: dict[str, FloatArray]) 
     stays where it is along the cable, unconstrained, and its edges carry no
     tension until a primitive measures one. The graph is mapped onto the
     remaining constraints again (``positions``: the grippers' tool centre
-    points [m] by arm), so that a released end hangs.
+    points [m] by arm), so that a released end hangs. Where no gripper
+    holds the cable any more, nothing keeps it up on the pegs it bears on
+    (contact points, held by the tension alone): each may slide down its
+    peg to the board, and its height's std becomes at least its height
+    above the board (random board 2082005138: W1, wound round F2 at 94 mm
+    and released after its last clip, slid down F2 to 27 mm while the
+    model held F2 at a trusted 4.6 mm std).
 
     Returns:
         Whether the graph had a point held by ``arm``.
@@ -55,6 +61,14 @@ def release_point(graph: PathGraph, arm: Arm, positions: dict[str, FloatArray]) 
             constraints[j] = pt.position
     if constraints:
         update_by_constraints(graph, constraints)
+    if graph.index_of("gripper") is None:
+        for pt in graph.points:
+            if pt.kind != "contact":
+                continue
+            height = max(float(pt.position[2]), 0.0)  # above the board, the plane z = 0
+            cov = np.zeros((3, 3)) if pt.covariance is None else pt.covariance.copy()
+            cov[2, 2] = max(float(cov[2, 2]), height * height)
+            pt.covariance = cov
     return True
 
 
@@ -67,7 +81,8 @@ class Release(Primitive):
     Preconditions: none (releasing an empty gripper only opens it).
     Model edits: the gripper's point of the cable's path graph becomes a
     free point (:func:`release_point`); the cable keeps what its fixtures
-    and the other gripper still hold. The context of a gripper that
+    and the other gripper still hold (with no gripper left on it, its pegs'
+    heights become unknown down to the board). The context of a gripper that
     released its cable no longer senses it.
 
     Success: the fingers opened by :data:`OPENED_BY` and stayed open for

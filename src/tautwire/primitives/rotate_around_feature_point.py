@@ -84,6 +84,8 @@ class RotateAroundFeaturePoint(Primitive):
     still it showed 0.13 N, that sampling's aliasing of the cable's
     vibration near the grasp, 0.039 N with the period's mean, after which
     that turn raised no suspicion). Failure:
+    ``not_wound`` if ``about`` names a peg of the board design and the
+    model's contact at the end is another point (:meth:`_succeed`);
     ``slipped`` if the tension stays below a fifth of its set point for
     ``slack_time`` after having been taut, or once the route to the fixed
     point is longer than an intact cable allows
@@ -95,7 +97,9 @@ class RotateAroundFeaturePoint(Primitive):
         axis: Rotation axis, world frame (default z).  # (3,)
         speed: Angular speed [rad/s].
         force: Tension set point [N]; default the context's (from D) or 3 N.
-        about: Name of the fixture the rotation is about (a label only).
+        about: Name of the fixture the rotation is about. A peg of the
+            board design (a route's winding) must be the model's contact at
+            the end (else ``not_wound``); any other name is a label only.
         slack_time: Longest time [s] the cable may be slack.
         timeout: Longest run time [s]; default three times the nominal time
             (at ``speed``, or slower where the speed limit on the circle's
@@ -288,7 +292,7 @@ class RotateAroundFeaturePoint(Primitive):
                 self._previous = None
                 self.outcome = RUNNING
             elif ok:
-                self._judge_turn(detail)
+                self._judge_turn(detail, ctx)
             else:
                 why = f"{self._suspect}; " if self._suspect else ""
                 self.outcome = Outcome.failure(
@@ -296,7 +300,29 @@ class RotateAroundFeaturePoint(Primitive):
                 )
         return Command(twist)
 
-    def _judge_turn(self, detail: str) -> None:
+    def _succeed(self, text: str, ctx: PrimitiveContext) -> None:
+        """Success, unless the turn was about a peg of the design the cable does not bear on.
+
+        ``about`` naming a peg of the board design (a route's winding) asks
+        for the cable round that peg: where the model's contact is another
+        point at the end (a planned catch fell short and the lines kept or
+        went back to the contact before it; random board 2082005138's F5,
+        after which a grasp pulled W2 off F4 while the model held it), the
+        winding failed (``not_wound``), whatever the count.
+        """
+        est = ctx.estimator
+        c = est.contact_index
+        label = ctx.graph.points[c].label if c is not None else None
+        if self.about is not None and self.about in est.round_fixtures and label != self.about:
+            self.outcome = Outcome.failure(
+                "not_wound",
+                f"{text}; but the cable does not bear on {self.about}: its lines meet at"
+                f" {label or 'no contact'}",
+            )
+            return
+        self.outcome = Outcome.success(text)
+
+    def _judge_turn(self, detail: str, ctx: PrimitiveContext) -> None:
         """Success if the pull turned by the angle; else take the turn up again, or fail."""
         assert self._check is not None
         end = self._check.direction()
@@ -304,7 +330,7 @@ class RotateAroundFeaturePoint(Primitive):
         expected = self._pass_turned + self._gain * (self.turned - self._pass_count)
         turned = None if end is None else self._turn_check.turned(end, expected)
         if turned is None:  # no reading (no taut start, or no step): the count stands
-            self.outcome = Outcome.success(f"{self._turn_detail}; {detail}")
+            self._succeed(f"{self._turn_detail}; {detail}", ctx)
             return
         reading = (
             f"the pull turned {math.degrees(turned):.0f} deg (the gripper's path about the"
@@ -312,7 +338,7 @@ class RotateAroundFeaturePoint(Primitive):
         )
         miss = self.angle - turned
         if abs(miss) <= TURN_TOLERANCE:
-            self.outcome = Outcome.success(f"{self._turn_detail}; {detail}; {reading}")
+            self._succeed(f"{self._turn_detail}; {detail}; {reading}", ctx)
             return
         if self._corrections >= CORRECTIONS:
             self.outcome = Outcome.failure(

@@ -80,7 +80,8 @@ class SingleArmClipping(Primitive):
     the clip's seat q, along the slot: where the cable leaves the fingers
     (on the force's line of action, :meth:`_target`) goes onto the line,
     which runs from c moved across onto the measured pull's line
-    (:meth:`_measured_shift`: a stiff cable bent at c leaves it beside c),
+    (:meth:`_measured_shift`: a stiff cable bent at c leaves it beside c;
+    not from a peg, whose tangent leave point the model places),
     and the push starts once the line passes within ``ALIGN_MISS`` of the
     seat (:meth:`_aligned`); then it pivots down about the clip's
     exit at ``PUSH_RATE``, with the tension raised to three times the clip's
@@ -165,6 +166,7 @@ class SingleArmClipping(Primitive):
         self._line_at_rest = ""  # the force line's verdict at rest, before the tug
         self._no_snap = ""  # what the push read when it found no snap down to its bottom
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
+        self._shifts = True  # the far contact moves onto the measured line (not from a peg)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -241,6 +243,12 @@ class SingleArmClipping(Primitive):
             return exit_point
         if label not in est.round_fixtures:
             return c
+        # a peg's leave point is its tangent at the estimated radius; the
+        # measured line (the wrench's line of action, good to 6-9 mm) adds
+        # only its own error there (the shipped harness's C2 from P1:
+        # shifted 8.7 mm, the cable went down 3.6-8 mm beside the slot;
+        # unshifted, clipped 1.4 mm beside it)
+        self._shifts = False
         estimate = est.contact_estimate()
         radius = (
             estimate.radius
@@ -369,7 +377,7 @@ class SingleArmClipping(Primitive):
         leaves = line_point(me.position, wrench.force, wrench.torque)
         if state.taut:
             self._offset = self._exit_offset.update(obs.time, leaves - me.position)
-            if self.phase == "align":
+            if self.phase == "align" and self._shifts:
                 self._line_shift = self._measured_shift(obs.time, leaves, state.direction)
         height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
         if self.phase in ("lift", "tug"):

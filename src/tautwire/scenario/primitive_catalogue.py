@@ -279,7 +279,11 @@ PRIMITIVES: tuple[PrimitiveSpec, ...] = (
         (
             ParamSpec("axis", "vector3", "rotation axis, normalised [-]", default=[0.0, 0.0, 1.0]),
             ParamSpec("speed", "number", "angular speed [rad/s]", "positive"),
-            ParamSpec("about", "fixture", "the fixture circled, only to label the estimate"),
+            ParamSpec(
+                "about",
+                "fixture",
+                "the fixture circled; a peg must end as the contact (else not_wound)",
+            ),
         ),
     ),
 )
