@@ -326,16 +326,19 @@ def test_a_caught_peg_enters_the_model_once_lines_can_judge_it(caught: bool) -> 
     estimate = ctx.estimator.contact_estimate()
     assert estimate is not None and not estimate.trusted  # as uncertain as the design
     assert not ctx.estimator.catch_peg("P1", robot.p)  # held already: no change
-    circle = RotateAroundFeaturePoint("left", 0.6, speed=0.3)
+    # the winding names its peg: it must end with the cable on it
+    circle = RotateAroundFeaturePoint("left", 0.6, speed=0.3, about="P1")
     report = run_step(robot, circle, ctx)
     labels = [p.label for p in ctx.graph.points]
     if caught:
+        assert report.success, report
         assert np.allclose(robot.contact, UNSEEN_TOUCH)
         assert labels == ["A1", "P1", "left"], labels
         assert np.linalg.norm((ctx.graph.points[1].position - UNSEEN_PEG)[:2]) < 0.01
     else:
         assert np.allclose(robot.contact, CONTACT)  # the cable never bore on the peg
         assert labels == ["A1", "left"], (labels, report)
+        assert report.cause == "not_wound" and "does not bear on P1" in report.detail, report
 
 
 def test_catching_a_fixture_that_is_no_peg_is_refused() -> None:
