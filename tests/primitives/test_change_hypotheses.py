@@ -353,3 +353,42 @@ def test_catching_a_fixture_that_is_no_peg_is_refused() -> None:
         ctx.estimator.catch_peg("C9", robot.p)
     with pytest.raises(InvalidArgumentError, match="not a peg of the board design"):
         ctx.estimator.expect_peg("A1", robot.p)
+
+
+@pytest.mark.parametrize("height", [0.09, 0.12])
+def test_a_point_above_a_peg_s_top_is_not_that_peg(height: float) -> None:
+    # random board 1652323633: winding F1, lines met 32 mm above F2's top
+    # and F2 became the contact; a cable that high passes over the peg
+    ctx = _unseen_context()
+    est = ctx.estimator
+    est.peg_tops = {"P1": 0.10}
+    estimate = UNSEEN_PEG.copy()
+    estimate[2] = height
+    assert est._add_contact(estimate, GRIPPER)
+    labels = [p.label for p in ctx.graph.points]
+    assert labels == ["A1", "P1" if height < 0.10 + 0.01 else "estimated", "left"], labels
+
+
+def test_a_contact_peg_s_height_is_unknown_while_its_lines_do_not_count() -> None:
+    # a peg's lines count only while the gripper circles it; otherwise the
+    # cable's height on it moves unobserved, by at most the gripper's climb
+    # (random board 1652323633: 27.7 mm down F1 at a trusted 4.5 mm std),
+    # and a slide or a tension moves it with the gripper still
+    # (random board 1808415002: 10.8 mm at 5.1 mm std)
+    from tautwire.model import FeaturePoint
+    from tautwire.primitives.model_estimator import PASSED_PEG_AXIAL_STD
+
+    est = _unseen_context().estimator
+    peg = FeaturePoint(UNSEEN_PEG.copy(), kind="contact", label="P1")
+    peg.covariance = (0.002**2) * np.eye(3)
+    est.rotation = (np.array([0.0, 0.0, 1.0]), 1.0)  # circling: its lines count
+    est._unseen_peg_height(peg, 0.10)
+    est._unseen_peg_height(peg, 0.13)
+    assert np.allclose(peg.covariance, (0.002**2) * np.eye(3))
+    est.rotation = None  # from here on nothing observes its height
+    est._unseen_peg_height(peg, 0.13)
+    std = np.sqrt(np.diag(peg.covariance))
+    assert np.allclose(std[:2], 0.002) and std[2] == pytest.approx(PASSED_PEG_AXIAL_STD)
+    est._unseen_peg_height(peg, 0.13 - 0.05)  # the gripper 50 mm down
+    assert math.sqrt(peg.covariance[2, 2]) == pytest.approx(0.05)
+    assert np.sqrt(np.diag(peg.covariance))[:2] == pytest.approx([0.002, 0.002])

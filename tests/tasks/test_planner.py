@@ -413,3 +413,26 @@ def test_plan_command_names_an_impossible_route(
     assert captured.out == ""
     (line,) = captured.err.strip().splitlines()
     assert "cable W1, route entry" in line and "too short" in line
+
+
+def test_a_catch_starts_at_its_height_and_names_its_peg() -> None:
+    # a slide and a tension before the catch leave the gripper where the
+    # cable's direction takes it (random boards 1652323633, 1808415002: 75-80
+    # mm up, and the sweep carried the cable over the peg's top): the catch
+    # first brings the gripper to the height it catches the peg at, observed;
+    # its last, unobserved move names the peg for the model
+    from tautwire.scenario import load_scenario
+    from tautwire.scenario.registry import scenario_path
+
+    p = plan_scenario(load_scenario(scenario_path("harness")))  # its routes
+    catches = [k for k, s in enumerate(p.steps) if "catch" in s.params]
+    assert [p.steps[k].params["catch"] for k in catches] == ["P1", "P2", "P3"]
+    for k in catches:
+        catch = p.steps[k]
+        assert catch.primitive == "move" and catch.params["observe"] is False
+        j = max(i for i in range(k) if p.steps[i].primitive != "move") + 1
+        first = p.steps[j]  # the first move of the catch
+        assert "catches the peg at" in first.why and first.params["observe"] is True
+        start, end = first.params["to"], catch.params["to"]
+        assert isinstance(start, list) and isinstance(end, list)
+        assert start[2] == pytest.approx(end[2])  # at the catch's height before it sweeps

@@ -138,6 +138,10 @@ SEGMENT_TOLERANCE = 0.005
 #: that sweeps the cable onto a peg on purpose): the taut span of the last
 #: fitting line is not the one the next change starts from.
 UNSEEN_MOTION = 0.005
+#: Height [m] above a peg's top beyond which a point is not on that peg: the
+#: cable passes over it (random board 1652323633: lines meeting 32 mm above
+#: F2's top while the cable wound F1 made F2 the contact).
+PEG_TOP_MARGIN = 0.01
 #: The route through a candidate may differ from the cable's length by this
 #: much [m], plus a fraction of it, plus the stretch of the tension's change
 #: and ``ROUTE_FRICTION`` of the stretch at the tension (friction at the new
@@ -346,6 +350,9 @@ class ModelEstimator:
         self.circling = True
         self._tail = 0.0  # weight [N] of the free tail hanging from the gripper, last seen
         self.round_fixtures = dict(round_fixtures or {})
+        #: The tops [m] of the design's pegs by name, where known: a point
+        #: higher than ``PEG_TOP_MARGIN`` above one is not on that peg.
+        self.peg_tops: dict[str, float] = {}
         self._rotation: tuple[FloatArray, float] | None = None
         self._rotations = 0  # how many rotations were set (a new path for each)
         #: The peg whose wrap is followed (its point's ``wrap`` holds the turn),
@@ -407,6 +414,8 @@ class ModelEstimator:
         self._unseen = False  # the gripper moved since then with no lines taken
         #: A peg a planned catch swept the cable onto, and the gripper [m] then.
         self._expected: tuple[str, FloatArray] | None = None
+        #: The contact peg and the gripper's height [m] when its lines last counted.
+        self._peg_height_ref: tuple[FeaturePoint, float] | None = None
         #: The slowly followed pull [N] of the filter's samples.
         self._pull_level: LowPass[float] = LowPass(PULL_LEVEL_TIME)
 
@@ -1149,6 +1158,8 @@ class ModelEstimator:
         for name, (axis_point, radius) in self.round_fixtures.items():
             if name in held or float(np.linalg.norm((x - axis_point)[:2])) > radius + 0.02:
                 continue
+            if self._over_peg(name, x):
+                continue
             if not self._add_contact(x.copy(), p_line):
                 return False
             # the lines met where they touch the peg, a radius beside its
@@ -1536,7 +1547,7 @@ class ModelEstimator:
         axis, sense = self.rotation
         label = self.graph.points[c].label
         for name, (axis_point, radius) in self.round_fixtures.items():
-            if name == label:
+            if name == label or self._over_peg(name, kf.x):
                 continue
             meet = line_meets_peg(p_g, f, axis, sense, axis_point, radius, kf.x, tolerance)
             if meet is None:
@@ -1700,6 +1711,11 @@ class ModelEstimator:
         axis, sense, radius = peg
         return shift_onto_axis(p_g, f, axis, sense, radius)
 
+    def _over_peg(self, name: str, x: FloatArray) -> bool:
+        """Whether ``x`` [m] lies more than ``PEG_TOP_MARGIN`` above peg ``name``'s top."""
+        top = self.peg_tops.get(name)
+        return top is not None and float(x[2]) > top + PEG_TOP_MARGIN
+
     def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> bool:
         """A new contact between the old one and the gripper: add its feature point."""
         g = self.gripper_index
@@ -1719,6 +1735,8 @@ class ModelEstimator:
         design: FloatArray | None = None
         for name, (axis_point, radius) in self.round_fixtures.items():
             # the board design says which peg this is, if one is near
+            if self._over_peg(name, estimate):
+                continue
             if float(np.linalg.norm((estimate - axis_point)[:2])) <= radius + 0.02:
                 label, design = name, np.asarray(axis_point, dtype=float)
         i = self.graph.insert_at_arc_length(s_new, kind="contact", label=label)
@@ -1733,6 +1751,41 @@ class ModelEstimator:
         self._filter_point = point  # the filter, restarted on the change, estimates it
         self._design = None if design is None else design.copy()
         return True
+
+    def _unseen_peg_height(self, contact: FeaturePoint | None, z_gripper: float) -> None:
+        """Keep the contact peg's height uncertain by the gripper's climb since its lines counted.
+
+        A peg's lines count only while the gripper circles it (a rotation's
+        sense places them on its axis); otherwise the cable's height on it
+        follows the gripper's unobserved, by at most the gripper's own
+        change of height (the peg lies between the point before it and the
+        gripper). Random board 1652323633: a move down 75 mm towards the
+        next catch slid W1 27.7 mm down the wound F1 while the model kept
+        F1's height at a trusted 4.5 mm std. The axial std is at least
+        that change, from the height the gripper had when the lines last
+        counted, and at least ``PASSED_PEG_AXIAL_STD``: a slide or a
+        tension's change moves the cable along the peg with the gripper
+        still (random board 1808415002: F2 10.8 mm off after E and D, at a
+        trusted 5.1 mm std).
+        """
+        if (
+            contact is None
+            or contact.kind != "contact"
+            or contact.label not in self.round_fixtures
+            or contact.covariance is None
+        ):
+            self._peg_height_ref = None
+            return
+        ref = self._peg_height_ref
+        if self.rotation is not None or ref is None or ref[0] is not contact:
+            self._peg_height_ref = (contact, z_gripper)
+            return
+        drift = max(abs(z_gripper - ref[1]), PASSED_PEG_AXIAL_STD)
+        axial = float(PEG_AXIS @ contact.covariance @ PEG_AXIS)
+        if axial < drift * drift:
+            contact.covariance = contact.covariance + (drift * drift - axial) * np.outer(
+                PEG_AXIS, PEG_AXIS
+            )
 
     def _update_graph(self, obs: Observation, g: int, c: int | None) -> None:
         """Map the constraints onto the graph (sec:constraintmapping)."""
@@ -1766,6 +1819,7 @@ class ModelEstimator:
                 self.graph.points[c].covariance = DESIGN_TOLERANCE**2 * np.eye(3)
         update_by_constraints(self.graph, constraints)
         contact = self.graph.points[c] if c is not None else None
+        self._unseen_peg_height(contact, float(obs.gripper(self.arm).position[2]))
         for pt in self.graph.points:
             if (
                 pt.kind == "contact"

@@ -198,7 +198,7 @@ def cable_context(
         if f.type == "clip"
     }
     robot = scenario.robot
-    return make_context(
+    ctx = make_context(
         graph,
         arm,
         force_limit=robot.force_limit,
@@ -211,6 +211,10 @@ def cable_context(
         round_fixtures=round_fixtures,
         clips=clips,
     )
+    ctx.estimator.peg_tops = {
+        f.name: float(f.position[2]) + f.height for f in scenario.board.fixtures if f.type == "peg"
+    }
+    return ctx
 
 
 def initial_models(

@@ -929,6 +929,14 @@ class _Planner:
         peg_side = _cross_z(u_now, u_peg) * sign  # > 0: the peg lies on the wanted side
         moves: list[tuple[FloatArray, str]] = []
         start = cable.gripper
+        if peg_side > 0.0:
+            # first to the height the cable catches the peg at: a slide and
+            # a tension before leave the gripper where the cable's direction
+            # takes it (random boards 1652323633 and 1808415002: 75-80 mm
+            # up, from where the sweep carried the cable over the peg's top)
+            start = cable.gripper.copy()
+            start[2] = z_grip
+            moves.append((start, "bring the cable to the height it catches the peg at"))
         if peg_side <= 0.0:  # the peg is on the other side: lift the cable over it
             clear = top + OVER_PEG
             z_lift = float(c[2]) + (clear - float(c[2])) * reach / max(to_peg, 1e-6)
