@@ -270,6 +270,16 @@ def _unseen_context():  # type: ignore[no-untyped-def]
     )
 
 
+def _taut_beside_the_peg(seed: int):  # type: ignore[no-untyped-def]
+    """The spring cable from the anchor, tensioned; a chord swept past the design peg catches it."""
+    robot = SpringCableRobot(
+        CONTACT, GRIPPER, 200.0, seed=seed, second_contact=UNSEEN_TOUCH, switch_on_chord=True
+    )
+    ctx = _unseen_context()
+    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    return robot, ctx
+
+
 @pytest.mark.parametrize("anchor_trusted", [False, True])
 def test_a_peg_the_cable_was_swept_onto_unobserved_joins_the_model(anchor_trusted: bool) -> None:
     # random board 483199372: a move that sweeps the cable onto a peg does
@@ -280,11 +290,7 @@ def test_a_peg_the_cable_was_swept_onto_unobserved_joins_the_model(anchor_truste
     # the model did not hold, and the run ended with the lines fitting nothing
     from tautwire.primitives.move import Move
 
-    robot = SpringCableRobot(
-        CONTACT, GRIPPER, 200.0, seed=31, second_contact=UNSEEN_TOUCH, switch_on_chord=True
-    )
-    ctx = _unseen_context()
-    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    robot, ctx = _taut_beside_the_peg(seed=31)
     if anchor_trusted:  # a circle about the anchor: its estimate is trusted
         circle = RotateAroundFeaturePoint("left", 2 * math.pi, speed=0.5)
         assert run_step(robot, circle, ctx).success
@@ -309,11 +315,7 @@ def test_a_caught_peg_enters_the_model_once_lines_can_judge_it(caught: bool) -> 
     # drops it where the cable missed it and its lines fit the anchor again
     from tautwire.primitives.move import Move
 
-    robot = SpringCableRobot(
-        CONTACT, GRIPPER, 200.0, seed=37, second_contact=UNSEEN_TOUCH, switch_on_chord=True
-    )
-    ctx = _unseen_context()
-    assert run_step(robot, SingleArmTension("left", 3.0), ctx).success
+    robot, ctx = _taut_beside_the_peg(seed=37)
     if caught:
         robot.switch_time = robot.time  # from now on the chord catches the peg
     move = Move("left", by=[0.0, 0.08, 0.0], observe=False, catch="P1")
