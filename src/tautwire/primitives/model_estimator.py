@@ -1047,7 +1047,8 @@ class ModelEstimator:
 
         The catch itself is not seen (the move takes no lines) and may fall
         short (random board 2082005138's sweep onto F5 left the cable beside
-        it; the winding after it brought it on). The peg enters the model
+        it, and F5 claimed at the move's end was made up for two steps).
+        The peg enters the model
         (:meth:`catch_peg`) at the first observed iteration after the
         gripper moved ``UNSEEN_MOTION`` from ``p_gripper``, so the primitive
         whose lines then estimate it, or drop it where the cable is not on
@@ -1076,8 +1077,8 @@ class ModelEstimator:
 
         A planned catch (``move`` with ``catch``, :meth:`expect_peg`) makes
         the cable bear on a peg while the filter takes no lines. The peg
-        enters the path graph
-        between the contact and the gripper at its design position, at the
+        enters the path graph between the contact and the gripper at its
+        design position, at the
         height where the straight span from the contact to the gripper
         passes its axis, with the design's uncertainty (untrusted), and the
         filter restarts from there. The lines of the next primitive then
