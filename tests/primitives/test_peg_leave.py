@@ -9,7 +9,13 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tautwire.primitives.peg_leave import axis_offset, leave_point, turn_side, wrap_side
+from tautwire.primitives.peg_leave import (
+    axis_offset,
+    leave_point,
+    path_turn,
+    turn_side,
+    wrap_side,
+)
 
 AXIS = np.array([0.25, 0.15, 0.08])
 
@@ -87,3 +93,19 @@ def test_a_wound_peg_takes_its_side_from_the_windings_followed(
     assert turn_side(before, AXIS, gripper, turn + drift) == math.copysign(1.0, turn)
     # without it, the path's angle alone
     assert turn_side(before, AXIS, gripper) == math.copysign(1.0, angle)
+
+
+@given(st.floats(-math.pi + 0.05, math.pi - 0.05), st.integers(-2, 2))
+def test_the_path_s_turn_is_the_angle_from_the_way_in_to_the_way_out(
+    angle: float, windings: int
+) -> None:
+    # F takes the side from the path where it turns by PATH_SIDE_TURN or
+    # more (the shipped harness's P1 at seeds 0 and 1: the force's line
+    # passed the model's axis 5 mm on the wrong side)
+    before = AXIS - np.array([0.1, 0.0, 0.0])
+    gripper = AXIS + 0.2 * np.array([math.cos(angle), math.sin(angle), 0.0])
+    assert path_turn(before, AXIS, gripper) == pytest.approx(angle, abs=1e-9)
+    turn = angle + 2.0 * math.pi * windings
+    assert path_turn(before, AXIS, gripper, turn + 0.3) == pytest.approx(turn, abs=1e-9)
+    if abs(turn) > 1e-6:
+        assert turn_side(before, AXIS, gripper, turn) == math.copysign(1.0, turn)

@@ -69,13 +69,27 @@ def turn_side(
     gripper (windings counted), picks the winding: the turn now is the
     angle plus the whole turns that bring it nearest ``wound``.
     """
+    turn = path_turn(before, axis_point, p_gripper, wound)
+    return 0.0 if abs(turn) < 1e-12 else math.copysign(1.0, turn)
+
+
+def path_turn(
+    before: FloatArray,
+    axis_point: FloatArray,
+    p_gripper: FloatArray,
+    wound: float | None = None,
+) -> float:
+    """The cable's turn [rad] round the peg, seen from above: + left, - right (:func:`turn_side`).
+
+    The angle from the way in (``before`` to the peg) to the way out (the
+    peg to the gripper), with the whole turns that bring it nearest
+    ``wound`` where a winding was followed.
+    """
     a = (np.asarray(axis_point, dtype=float) - np.asarray(before, dtype=float))[:2]
     b = (np.asarray(p_gripper, dtype=float) - np.asarray(axis_point, dtype=float))[:2]
     cross = float(a[0] * b[1] - a[1] * b[0])
-    if wound is not None:
-        turn = nearest_turn(math.atan2(cross, float(a @ b)), wound)
-        return 0.0 if abs(turn) < 1e-12 else math.copysign(1.0, turn)
-    return 0.0 if abs(cross) < 1e-12 else math.copysign(1.0, cross)
+    angle = math.atan2(cross, float(a @ b))
+    return angle if wound is None else nearest_turn(angle, wound)
 
 
 def nearest_turn(angle: float, reference: float) -> float:

@@ -25,7 +25,7 @@ from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
-from tautwire.primitives.peg_leave import axis_offset, leave_point, turn_side, wrap_side
+from tautwire.primitives.peg_leave import axis_offset, leave_point, path_turn, wrap_side
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
@@ -64,6 +64,9 @@ FLOOR_REACHED = 0.002
 TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
 EXIT_TIME = 0.2
+#: Smallest turn [rad] of the cable's path round a peg from which the path,
+#: not the force's line, says which side of the peg the cable leaves by.
+PATH_SIDE_TURN = math.radians(10.0)
 #: Largest shift [m] of the far contact, across the line, that the measured
 #: pull may make while aligning (beyond it the line bears on something else).
 MAX_LINE_SHIFT = 0.01
@@ -219,13 +222,15 @@ class SingleArmClipping(Primitive):
         (:meth:`ClipInfo.exit_towards`), where the cable leaves its jaws.
         A peg: the cable leaves it tangentially, its radius
         (the filter's estimate, else the design's peg + cable radius) beside
-        the axis point the model holds, on the side it wraps it now
-        (:func:`~tautwire.primitives.peg_leave.wrap_side` of the force's
-        line; where that line passes within half the radius of the axis, too
-        near to tell, the side the model's path turns round the peg,
-        :func:`~tautwire.primitives.peg_leave.turn_side`, from the
-        windings the model followed round it and from the
-        constrained point before it): the tangent point of the line over the clip
+        the axis point the model holds, on the side it wraps it now: the
+        side the model's path turns round the peg
+        (:func:`~tautwire.primitives.peg_leave.path_turn`, from the
+        windings the model followed round it and from the constrained
+        point before it) where it turns by ``PATH_SIDE_TURN`` or more, or
+        where the force's line passes within half the radius of the axis,
+        too near to tell; else the side of the force's line
+        (:func:`~tautwire.primitives.peg_leave.wrap_side`): the tangent
+        point of the line over the clip
         (:func:`~tautwire.primitives.peg_leave.leave_point`). Aiming from the
         axis would put the cable a radius beside the slot.
         """
@@ -256,14 +261,20 @@ class SingleArmClipping(Primitive):
             else est.round_fixtures[label][1]
         )
         side = wrap_side(c, p_gripper, state.direction)
-        if abs(axis_offset(c, p_gripper, state.direction)) < 0.5 * radius:
-            # the line passes too near the axis to tell the side (1 deg of
-            # direction error at 0.3 m is 5 mm): the side the cable's path turns
-            before = None if i is None else est.point_before(i)
-            turn = 0.0
-            if before is not None and i is not None:
-                turn = turn_side(before.position, c, p_gripper, est.wound(i))
-            side = turn if turn != 0.0 else side
+        before = None if i is None else est.point_before(i)
+        turn = 0.0
+        if before is not None and i is not None:
+            turn = path_turn(before.position, c, p_gripper, est.wound(i))
+        if abs(turn) >= PATH_SIDE_TURN or (
+            turn != 0.0 and abs(axis_offset(c, p_gripper, state.direction)) < 0.5 * radius
+        ):
+            # the cable's path turns round the peg clearly, or the line passes
+            # too near the axis to tell the side (1 deg of direction error at
+            # 0.3 m is 5 mm): the side the path turns. The shipped harness's
+            # C2 from P1 at seeds 0 and 1: P1 estimated 4.9 mm off towards
+            # the true leave point, the line passed it 5 mm on the other side,
+            # F aimed from the wrong tangent, 17 mm off, and missed the slot
+            side = math.copysign(1.0, turn)
         through = info.position + np.array([0.0, 0.0, ABOVE])
         return leave_point(c, radius, through, side)
 
