@@ -340,7 +340,9 @@ def test_a_caught_peg_enters_the_model_once_lines_can_judge_it(caught: bool) -> 
     else:
         assert np.allclose(robot.contact, CONTACT)  # the cable never bore on the peg
         assert labels == ["A1", "left"], (labels, report)
-        assert report.cause == "not_wound" and "does not bear on P1" in report.detail, report
+        assert report.cause == "not_wound" and "does not hold the cable on P1" in report.detail, (
+            report
+        )
 
 
 def test_catching_a_fixture_that_is_no_peg_is_refused() -> None:

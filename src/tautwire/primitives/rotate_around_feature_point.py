@@ -308,7 +308,11 @@ class RotateAroundFeaturePoint(Primitive):
         point at the end (a planned catch fell short and the lines kept or
         went back to the contact before it; random board 2082005138's F5,
         after which a grasp pulled W2 off F4 while the model held it), the
-        winding failed (``not_wound``), whatever the count.
+        winding failed (``not_wound``), whatever the count: the steps after
+        it need the peg in the model. Lines a drifting sensor bias tilts can
+        lose a peg the cable is on (robustness trial 9 of seed 0, a
+        bias_drift: the step reported success before, with no estimate of
+        the peg in the model); that too ends the step.
         """
         est = ctx.estimator
         c = est.contact_index
@@ -316,8 +320,8 @@ class RotateAroundFeaturePoint(Primitive):
         if self.about is not None and self.about in est.round_fixtures and label != self.about:
             self.outcome = Outcome.failure(
                 "not_wound",
-                f"{text}; but the cable does not bear on {self.about}: its lines meet at"
-                f" {label or 'no contact'}",
+                f"{text}; but the model does not hold the cable on {self.about}: its lines"
+                f" meet at {label or 'no contact'}",
             )
             return
         self.outcome = Outcome.success(text)
