@@ -301,7 +301,7 @@ class RotateAroundFeaturePoint(Primitive):
         return Command(twist)
 
     def _succeed(self, text: str, ctx: PrimitiveContext) -> None:
-        """Success, unless the turn was about a peg of the design the model does not hold the cable on.
+        """Success, unless about names a design peg that the model does not hold the cable on.
 
         ``about`` naming a peg of the board design (a route's winding) asks
         for the cable round that peg: where the model's contact is another
