@@ -1078,17 +1078,17 @@ class ModelEstimator:
         A planned catch (``move`` with ``catch``, :meth:`expect_peg`) makes
         the cable bear on a peg while the filter takes no lines. The peg
         enters the path graph between the contact and the gripper at its
-        design position, at the
-        height where the straight span from the contact to the gripper
-        passes its axis, with the design's uncertainty (untrusted), and the
-        filter restarts from there. The lines of the next primitive then
-        estimate it, and drop it again if they fit the point before it (the
-        cable missed the peg, ``_watch_leave``). Left to the lines alone,
-        the first ones of the winding that follows met 22-40 mm along the
-        span from the peg at a reported 3 mm std (the shipped harness's P2:
-        the free tail's drag builds up as the gripper starts to circle and
-        turns the pull faster than the geometry does), too far to be taken
-        as the peg, and the winding failed with ``sensor_bias``.
+        design position, at the height where the straight span from the
+        contact to the gripper passes its axis, with the design's
+        uncertainty (untrusted), and the filter restarts from there. The
+        lines of the next primitive then estimate it, and drop it again if
+        they fit the point before it (the cable missed the peg,
+        ``_watch_leave``). Left to the lines alone, the first ones of the
+        winding that follows met 34-40 mm along the span from the peg at a
+        reported 3 mm std (the shipped harness's P2: the free tail's drag
+        builds up as the gripper starts to circle and turns the pull faster
+        than the geometry does), too far to be taken as the peg, and the
+        winding failed with ``sensor_bias``.
 
         Args:
             name: A peg of the board design (``round_fixtures``).

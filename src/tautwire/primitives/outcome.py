@@ -19,7 +19,7 @@ CAUSES: tuple[str, ...] = (
     "missed",  # a grasp closed on nothing
     "not_aligned",  # the gripper could not be aligned with the cable
     "not_turned",  # a rotation's pull did not turn by the angle asked, even taken up again
-    "not_wound",  # a rotation about a peg ended with the cable bearing on another contact
+    "not_wound",  # a rotation about a peg ended with the model's contact at another point
     "sensor_stale",  # the sensor's data stopped advancing or was unusable for too long
     "sensor_bias",  # the force sensor's bias drifted beyond what the estimates tolerate
     "robot_error",  # the robot failed: repeated lost commands or any other robot exception
