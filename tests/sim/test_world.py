@@ -141,6 +141,40 @@ def test_hold_grasps_the_nearest_vertex_without_a_jump_and_open_releases() -> No
     assert np.linalg.norm(world.wrench("left")[0]) < 1e-9
 
 
+@pytest.mark.parametrize("beside", [-0.002, 0.0015])
+def test_a_grasp_centres_the_cable_between_the_pads(beside: float) -> None:
+    """Closing fingers put the held cable on the tool's centre line, not in a pad.
+
+    Held where it lay, 2 mm towards one pad, the vertex's capsule sat inside that
+    pad: the weld and the pad's contact pushed hundreds of newtons against each
+    other, and the wrench's line of action moved 15 mm beside the cable.
+    """
+    world = anchor_and_gripper([0.0, 0.0, 0.3], [0.2, 0.0, 0.3], 0.4, 300.0, held_at=0.2)
+    rest(world, 0.1)
+    world.set_gripper("left", GripperCommand("open"))
+    twist = np.zeros(12)
+    twist[1] = beside / 0.02  # the open gripper moves along its tool y, beside the cable
+    world.set_twist(twist)
+    for _ in range(round(0.02 / world.control_period)):
+        world.step()
+    world.set_gripper("left", GripperCommand("hold"))
+    held = world.held("left")
+    assert held is not None
+    twist = np.zeros(12)
+    twist[0] = 0.05  # pull the cable taut towards +x
+    world.set_twist(twist)
+    for _ in range(round(0.4 / world.control_period)):
+        world.step()
+    rest(world, 0.3)
+    p, _ = world.gripper_pose("left")
+    vertex = world._data.xpos[world._cables["W"].body_ids[held[1]]]
+    assert abs(float(vertex[1] - p[1])) < 3e-4  # on the centre line (tool y is world y)
+    force, torque = world.wrench("left")
+    assert np.linalg.norm(force) > 1.0  # taut
+    # the line of action passes the held vertex, not a pad's contact
+    assert abs(float(torque[2])) / np.linalg.norm(force[:2]) < 1e-3
+
+
 def test_time_starts_after_settling_and_advances_by_control_periods() -> None:
     world = peg_scene()
     assert world.time == 0.0

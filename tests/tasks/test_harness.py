@@ -45,22 +45,22 @@ def test_the_harness_runs_to_its_end_truthfully() -> None:
 
 
 @pytest.mark.slow
-def test_a_cable_beside_the_slot_is_not_reported_clipped() -> None:
-    # random board 1695658280: F aimed W1 at F3 from a peg; the cable went
-    # down 7.5 mm beside the slot while the force's line, through a point 6-9 mm
-    # off where the cable truly leaves the fingers, read it 1.7 mm beside: a
-    # reported clip the simulator denied. The tug (clip_tug.py) feels that
-    # the pull turns about the far peg, not the clip.
-    # the board as first drawn, W1's task up to F3 (the planner now refuses
-    # the board for W2's lift out of F5, so it is kept as data)
+def test_f_from_a_peg_after_a_regrip_seats_the_cable() -> None:
+    # random board 1695658280: F aimed W1 at F3 from a peg after E's regrip.
+    # The regrip held the cable where it lay, 2 mm towards one pad: weld and
+    # pad pushed against each other, the force's line ran 6-9 mm off where
+    # the cable leaves the fingers, and the cable went down 7.5 mm beside
+    # the slot (the tug then reported it honestly, not_clipped). A grasp now
+    # centres the cable between the pads (sim/world.py), and F seats it.
+    # The board as first drawn, W1's task up to F3, kept as data.
     from pathlib import Path
 
     scene = Path(__file__).parent / "data" / "board_1695658280_f3.yaml"
     result, _, _ = run_scenario(load_scenario(scene), 0)
     assert result.false_successes == 0, [s["truth"] for s in result.steps]
     clip = result.steps[-1]
-    assert clip["letter"] == "F" and clip["cause"] == "not_clipped", clip
-    assert "about the far contact" in clip["detail"]
-    assert "not in the jaws of F3" in clip["truth"]["detail"]
+    assert clip["letter"] == "F" and clip["outcome"] == "success", clip
+    assert "held" in clip["detail"]
+    assert "the cable is in the jaws of F3" in clip["truth"]["detail"]
     first = next(s for s in result.steps if s["letter"] == "F")
     assert first["outcome"] == "success" and "held" in first["detail"], first

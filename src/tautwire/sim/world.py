@@ -26,7 +26,7 @@ from tautwire.robot.arm import ARMS, Arm
 from tautwire.robot.command import GripperCommand
 from tautwire.sim.diverged import SimulationDiverged
 from tautwire.sim.gripper_state import GripperState, integrate_pose
-from tautwire.sim.mjcf import SceneModel, hold_equality, scene_model, vertex_body
+from tautwire.sim.mjcf import PAD_HALF, SceneModel, hold_equality, scene_model, vertex_body
 from tautwire.sim.options import SimOptions, control_substeps
 from tautwire.sim.spec import CableSpec, WorldSpec
 
@@ -506,6 +506,15 @@ class SimWorld:
             anchor = np.zeros(3)  # the vertex was built at the tool centre point
         else:
             anchor = to_rotation(g.orientation).inv().apply(p_vertex - g.position)
+            # closing fingers centre the cable between their pads (tool y), and
+            # the pads' lips keep it within their height (tool z): a vertex held
+            # where it was, beside the centre line, sat inside a pad and the weld
+            # and the pad's contact pushed 250 N against each other, which put
+            # the wrench's line of action 15 mm beside the cable (random board
+            # 1652323633, after E's regrip)
+            anchor[1] = 0.0
+            reach = max(PAD_HALF[2] - idx.spec.radius, 0.0)
+            anchor[2] = float(np.clip(anchor[2], -reach, reach))
         self._model.eq_data[eq, 0:3] = anchor
         self._model.eq_data[eq, 3:6] = 0.0
         self._data.eq_active[eq] = 1
