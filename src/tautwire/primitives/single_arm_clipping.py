@@ -28,6 +28,7 @@ from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.peg_leave import axis_offset, leave_point, path_turn, wrap_side
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.primitives.slot_swing import SlotSwing, turn_onto, turned
 from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
@@ -87,7 +88,9 @@ class SingleArmClipping(Primitive):
     not from a peg, whose tangent leave point the model places),
     and the push starts once the line passes within ``ALIGN_MISS`` of the
     seat (:meth:`_aligned`); then it pivots down about the clip's
-    exit at ``PUSH_RATE``, with the tension raised to three times the clip's
+    exit at ``PUSH_RATE`` (turning about it onto the slot's axis once the
+    cable rests on the jaws, where the cable crosses the slot at an angle:
+    :mod:`~tautwire.primitives.slot_swing`), with the tension raised to three times the clip's
     push force (:func:`push_tension`); where a soft cable's stretch would
     then leave too shallow a bend above the table to press ``PRESS_MARGIN``
     times the push force, to the nearest tension that does
@@ -170,6 +173,7 @@ class SingleArmClipping(Primitive):
         self._no_snap = ""  # what the push read when it found no snap down to its bottom
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         self._shifts = True  # the far contact moves onto the measured line (not from a peg)
+        self._swing = SlotSwing(0.0, JAW_TOP)  # onto the slot once on the jaws (set at the push)
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -402,6 +406,7 @@ class SingleArmClipping(Primitive):
                 out[2] = 0.0
                 self._out = out / max(float(np.linalg.norm(out)), 1e-9)
                 self._tug = ClipTug(self._out)
+                self._swing = SlotSwing(turn_onto(self._out, self.info.slot), JAW_TOP)
                 self._exit = self.info.exit_towards(me.position)
                 self._exit[2] += JAW_TOP
                 offset = me.position - self._exit
@@ -419,6 +424,12 @@ class SingleArmClipping(Primitive):
             force = self.force
             # pressed home after a tug at the lift's rate: no snap to feel
             rate = PUSH_RATE if self._tug_reading is None else 2.0 * PUSH_RATE
+            if self.phase == "push":
+                # resting on the jaws across the slot: turn onto it (slot_swing.py)
+                turn = self._swing.step(obs.time, height, self.angle, ctx.control_period)
+                if turn != 0.0:
+                    self._out = turned(self._out, turn)
+                    self._tug = ClipTug(self._out)
             self.angle += rate * ctx.control_period
             target = self._pivot(obs)
             floored = False
