@@ -436,3 +436,34 @@ def test_a_catch_starts_at_its_height_and_names_its_peg() -> None:
         start, end = first.params["to"], catch.params["to"]
         assert isinstance(start, list) and isinstance(end, list)
         assert start[2] == pytest.approx(end[2])  # at the catch's height before it sweeps
+
+
+# ------------------------------------------------------- F's push and the board
+
+NEXT = BoardFixture("NEXT", "clip", (0.37, 0.20, 0.08), yaw=0.0, push_force=2.5, length=0.03)
+CLIP = BoardFixture("C", "clip", (0.25, 0.20, 0.08), yaw=0.0, push_force=2.5, length=0.03)
+
+
+def _slide(p: Plan) -> float:
+    return float(next(s for s in p.steps if s.primitive == "single_arm_sliding").params["distance"])
+
+
+def test_f_slides_out_only_so_far_that_its_push_clears_the_next_clip() -> None:
+    # random board 208802845's F2 pressed the cable in its fingers onto F3,
+    # the next clip on along the slot: the slide out left the gripper there
+    short = cable("W1", [RouteEntry("C")], holds=(("left", 0.19),))
+    robot = replace(ROBOT, grippers={"left": (0.20, 0.25, 0.10), "right": (0.30, -0.20, 0.10)})
+    alone = plan_routes(RouteProblem((BOARD[0], CLIP), (short,), robot))
+    beside = plan_routes(RouteProblem((BOARD[0], CLIP, NEXT), (short,), robot))
+    assert _slide(beside) < _slide(alone)
+    f = [s for s in beside.steps if s.primitive == "single_arm_clipping"]
+    assert len(f) == 1 and f[0].params["clip"] == "C"
+
+
+def test_a_push_onto_the_next_clip_with_no_hand_over_is_refused() -> None:
+    # held 0.34 m along: the gripper stands over NEXT, and the other one is busy
+    far = cable("W1", [RouteEntry("C")], holds=(("left", 0.34),))
+    other = cable("W2", [RouteEntry("C3")], start="A2", holds=(("right", 0.35),), length=0.6)
+    board = (BOARD[0], BOARD[1], BOARD[5], CLIP, NEXT)
+    with pytest.raises(RouteError, match=r"pressing the cable into C takes the .* into NEXT"):
+        plan_routes(RouteProblem(board, (far, other), ROBOT))

@@ -174,6 +174,7 @@ class SingleArmClipping(Primitive):
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         self._shifts = True  # the far contact moves onto the measured line (not from a peg)
         self._swing = SlotSwing(0.0, JAW_TOP)  # onto the slot once on the jaws (set at the push)
+        self._on_line = np.zeros(3)  # over the exit on the aimed line (set at the push) [m]
         if info is None:
             self.outcome = Outcome.failure("precondition", f"no clip named {self.clip!r}")
             return
@@ -364,6 +365,21 @@ class SingleArmClipping(Primitive):
         share = float(np.linalg.norm(w)) / max(reach, 1e-9)
         return abs(float(error @ n)) * share < ALIGN_MISS
 
+    def _centre(self) -> np.ndarray:
+        """The point [m] the gripper pivots about: over the clip's exit, on the aimed line.
+
+        The push starts in the vertical plane of the line aimed over the
+        seat, which passes the slot's exit 15 mm sin(alpha) to the side
+        where the cable crosses the slot at alpha: pivoting in the plane
+        through the exit itself shifted the cable by that much at the start
+        (random board 1695658280's F2: 1.8 mm beside the seat when aligned,
+        3.6 mm when it met the jaws, beyond a jaw's crest). As the gripper
+        turns onto the slot (:class:`SlotSwing`), the centre moves onto the
+        exit, on the slot's axis.
+        """
+        centre: np.ndarray = self._on_line + self._swing.progress * (self._exit - self._on_line)
+        return centre
+
     def _pivot(self, obs: Observation) -> np.ndarray:
         """The set point while pushing: turned down by ``angle`` about the clip's exit.
 
@@ -372,10 +388,11 @@ class SingleArmClipping(Primitive):
         angle asin(P / f) is reached with the least descent.
         """
         me = obs.gripper(self.arm).position
-        offset = me - self._exit
+        centre = self._centre()
+        offset = me - centre
         ahead = float(offset @ self._out)
         radius = math.hypot(ahead, float(offset[2]))
-        target: np.ndarray = self._exit + radius * (
+        target: np.ndarray = centre + radius * (
             math.cos(self.angle) * self._out - math.sin(self.angle) * np.array([0.0, 0.0, 1.0])
         )
         return target
@@ -409,7 +426,10 @@ class SingleArmClipping(Primitive):
                 self._swing = SlotSwing(turn_onto(self._out, self.info.slot), JAW_TOP)
                 self._exit = self.info.exit_towards(me.position)
                 self._exit[2] += JAW_TOP
-                offset = me.position - self._exit
+                seat = self.info.position
+                self._on_line = seat + float((self._exit - seat) @ self._out) * self._out
+                self._on_line[2] = self._exit[2]
+                offset = me.position - self._on_line
                 self._angle0 = math.atan2(-float(offset[2]), float(offset @ self._out))
                 self.angle = self._angle0
                 self._deeper = self._angle0 + 0.05

@@ -90,6 +90,11 @@ class SlotSwing:
         self._heights: list[tuple[float, float, float]] = []  # (time, height, angle)
 
     @property
+    def progress(self) -> float:
+        """The share of the turn made, 0 to 1 (0 where there is none to make)."""
+        return 0.0 if self.total == 0.0 else (self.total - self.left) / self.total
+
+    @property
     def bend(self) -> float:
         """Pivot [rad] past the touch before turning."""
         return max(SWING_BEND, BEND_PER_TURN * abs(self.total))

@@ -60,6 +60,7 @@ from tautwire.primitives.single_arm_clipping import (
     ABOVE,
     MAX_ANGLE,
     MAX_SLOT_ANGLE,
+    PRESS_EXTRA,
     TABLE_CLEARANCE,
 )
 from tautwire.robot import Arm
@@ -1193,12 +1194,35 @@ class _Planner:
                 f"cable in: bending it over the clip presses at most {best:.1f} N of the "
                 f"{needed:.1f} N needed (the gripper stays {TABLE_CLEARANCE:g} m above the board)",
             )
-        self.ensure_free(cable, to_exit + MIN_LEAD, "to clip")
+        if cable.free < to_exit + MIN_LEAD:
+            # slide out only so far that F's pivot clears the board
+            lead = self.clear_pivot_radius(cable, clip, exit_point, LEAD)
+            self.ensure_free(cable, to_exit + MIN_LEAD, "to clip", lead=lead)
         r = cable.free - to_exit
         if self.press_plan(cable, clip, exit_point, r) < needed:
             # held too far out: grasp nearer with the other gripper
             r_ok = self.closest_press_radius(cable, clip, exit_point, r, needed)
             self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip in")
+            r = cable.free - to_exit
+        hit = self.pivot_collision(cable, clip, exit_point, r)
+        if hit is not None:
+            r_ok = self.clear_pivot_radius(cable, clip, exit_point, r)
+            why = ""
+            if self.pivot_collision(cable, clip, exit_point, r_ok) is not None:
+                why = "however near the clip it holds the cable"
+            elif self.other_arm_free(cable) is None:
+                why = (
+                    f"held {r:.3f} m past the clip (clear within {r_ok:.3f} m), and no "
+                    f"hand-over is possible: {self.why_other_busy(cable)}"
+                )
+            if why:
+                raise self.fail(
+                    cable,
+                    f"pressing the cable into {clip.name} takes the {hit.by} into "
+                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {hit.fixture} needs "
+                    f"at least {hit.needed:.3f} m there, {why}",
+                )
+            self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip clear")
         seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
         target = c + _unit(seat_over - c) * cable.free
         if float(target[2]) < TABLE_CLEARANCE:
@@ -1235,6 +1259,74 @@ class _Planner:
         cable.s_contact += to_exit
         cable.contact = exit_point
         cable.last = clip.name
+
+    def pivot_collision(
+        self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float
+    ) -> Collision | None:
+        """The first fixture F's push runs into with the gripper ``r`` [m] past the clip's exit.
+
+        F pivots the gripper down about the exit (raised to the jaws' top)
+        until it has pressed the clip in (the bend that presses the push
+        force with ``PRESS_MARGIN`` at the push tension, and twice
+        ``PRESS_EXTRA`` on), at most to the board's clearance or
+        ``MAX_ANGLE`` (where no snap comes it goes on down: a gripper that
+        then meets a fixture ends the step at the force limit, cleanly),
+        first in the vertical
+        plane of the line from the last fixed point over the seat, then
+        turned onto the slot's axis (:mod:`~tautwire.primitives.slot_swing`):
+        both planes are checked. Random board 208802845's F2 pressed the
+        cable in its fingers onto F3, the next clip 137 mm on along the slot,
+        with 33 N.
+        """
+        c = cable.contact
+        seat = _vec(clip.position)
+        slot, _, _ = self.slot_line(cable, clip)
+        exit_top = exit_point.copy()
+        exit_top[2] = float(seat[2]) + JAW_TOP
+        seat_over = seat + np.array([0.0, 0.0, ABOVE])
+        start = c + _unit(seat_over - c) * (float(np.linalg.norm(exit_point - c)) + r)
+        reach = float(np.linalg.norm(start - exit_top))  # F keeps this radius
+        top = math.atan2(
+            -float(start[2] - exit_top[2]), float(np.linalg.norm(_flat(start - exit_top)))
+        )
+        drop = float(exit_top[2]) - TABLE_CLEARANCE
+        bottom = min(MAX_ANGLE, math.asin(min(max(drop / max(reach, 1e-6), 0.0), 1.0)))
+        # F stops past the snap: where the bend presses the clip's push force
+        # with the margin at the push tension, and a press beyond it
+        far = c - exit_top
+        sin_far = float(far[2]) / max(float(np.linalg.norm(far)), 1e-9)
+        tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
+        sin_snap = min(PRESS_MARGIN * clip.push_force / tension + sin_far, 1.0)
+        bottom = min(bottom, math.asin(max(sin_snap, -1.0)) + 2.0 * PRESS_EXTRA)
+        skip = frozenset(n for n in (cable.last, clip.name) if n is not None)
+        up = np.array([0.0, 0.0, 1.0])
+        for out in (_unit(_flat(seat - c)), slot):
+            points = [
+                exit_top + reach * (math.cos(a) * out - math.sin(a) * up)
+                for a in np.linspace(top, max(bottom, top), 9)
+            ]
+            for point in points:
+                # the gripper and its tail: the cable pressed onto this clip
+                # may rest on the next one's jaws (random board 208802845's
+                # F1 snapped in so), a gripper pressing onto it may not
+                hit = gripper_collision(point, self.problem.fixtures, self.overlapping(skip))
+                if hit is None:
+                    hit = self.tail_hit(cable, point, exit_top, self.overlapping(skip))
+                if hit is not None:
+                    return hit
+        return None
+
+    def clear_pivot_radius(
+        self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float
+    ) -> float:
+        """The largest gripper distance [m] past the exit, up to ``r``, whose push clears the board.
+
+        ``MIN_LEAD`` where none does.
+        """
+        for radius in np.linspace(r, MIN_LEAD, 40):
+            if self.pivot_collision(cable, clip, exit_point, float(radius)) is None:
+                return float(radius)
+        return MIN_LEAD
 
     def closest_press_radius(
         self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float, needed: float
@@ -1310,8 +1402,11 @@ class _Planner:
 
     # -- length: slide out and hand over
 
-    def ensure_free(self, cable: _Cable, need: float, what: str) -> None:
-        """Slide the cable out (E) until ``need`` [m] of it lies past the last fixed point."""
+    def ensure_free(self, cable: _Cable, need: float, what: str, lead: float = LEAD) -> None:
+        """Slide the cable out (E) until ``need`` [m] of it lies past the last fixed point.
+
+        The slide goes ``lead - MIN_LEAD`` [m] beyond ``need``.
+        """
         if cable.free >= need:
             return
         distance = need - cable.free
@@ -1323,7 +1418,7 @@ class _Planner:
                 f"(the route so far {cable.s_contact:.3f} m plus {need:.3f} m), it is "
                 f"{cable.spec.length:.3f} m long",
             )
-        distance = min(distance + LEAD - MIN_LEAD, cable.spec.length - TAIL - cable.at)
+        distance = min(distance + max(lead - MIN_LEAD, 0.0), cable.spec.length - TAIL - cable.at)
         out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
         self.check_reach(cable, out, "sliding the cable out")
         self.require_clear(cable, cable.contact, cable.gripper, [out], "sliding the cable out")
