@@ -131,17 +131,12 @@ def test_c_after_h_turns_the_pair_onto_the_slot_and_clips() -> None:
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(
-    strict=False,
-    reason="measured at 205fa85 and on 3f1166c alike: I ends with C1 estimated 3.1 mm from "
-    "the true clip at a reported std of 1.4 mm, trusted (tolerance 3.0 mm; measured at "
-    "e464e7a it read 3.0 mm and passed): an ordinary 2.2-sigma error inside the trust limit. A "
-    "clip's contact lies on its slot between its ends, a constraint the model does not use "
-    "yet",
-)
 def test_clip_then_slide_then_turn_about_the_clip() -> None:
     # after F the clip is the cable's last fixed point: E slides out cable
-    # beyond it, D pulls against it, I turns the cable about it
+    # beyond it, D pulls against it, I turns the cable about it. At 205fa85
+    # and 3f1166c I ended with C1 estimated 3.1 mm from the true clip at a
+    # reported 1.4 mm std, trusted (tolerance 3.0 mm): a clip's contact now
+    # lies on its slot (model_estimator.on_slot)
     result = _after(
         "F",
         [
