@@ -29,6 +29,7 @@ tension, and the groove holds kinks of about 10 deg (random board
 from __future__ import annotations
 
 import math
+from collections import deque
 
 import numpy as np
 from numpy.typing import NDArray
@@ -42,10 +43,10 @@ TOUCH_ABOVE = 0.004
 STALL_DROP = 0.0005
 #: Time [s] over which the line's drop is judged.
 STALL_TIME = 0.3
-#: Least pivot [rad] past the touch before the turn.
+#: Least bend [rad] past the touch by which the whole turn is made.
 SWING_BEND = math.radians(10.0)
-#: Pivot past the touch per radian of turn (the groove holds a kink whose
-#: pull is within about 0.8 of the press).
+#: Bend past the touch per radian of turn by which the whole turn is made (the
+#: groove holds a kink whose pull is within about 0.8 of the press).
 BEND_PER_TURN = 1.5
 #: Rate [rad/s] of the turn about the clip's exit.
 SWING_RATE = 0.15
@@ -87,7 +88,7 @@ class SlotSwing:
         self.total = self.left
         self.jaw_top = jaw_top
         self.touch: float | None = None  # pivot angle [rad] at which the cable met the jaws
-        self._heights: list[tuple[float, float, float]] = []  # (time, height, angle)
+        self._heights: deque[tuple[float, float, float]] = deque()  # (time, height, angle)
 
     @property
     def progress(self) -> float:
@@ -96,7 +97,7 @@ class SlotSwing:
 
     @property
     def bend(self) -> float:
-        """Pivot [rad] past the touch before turning."""
+        """Bend [rad] past the touch by which the whole turn is made."""
         return max(SWING_BEND, BEND_PER_TURN * abs(self.total))
 
     def step(self, time: float, height: float | None, angle: float, period: float) -> float:
@@ -135,7 +136,7 @@ class SlotSwing:
             return
         self._heights.append((time, height, angle))
         while len(self._heights) > 1 and time - self._heights[1][0] >= STALL_TIME:
-            self._heights.pop(0)
+            self._heights.popleft()
         t0, h0, a0 = self._heights[0]
         if (
             height <= self.jaw_top + TOUCH_ABOVE
