@@ -1298,7 +1298,7 @@ class _Planner:
         tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
         sin_snap = min(PRESS_MARGIN * clip.push_force / tension + sin_far, 1.0)
         bottom = min(bottom, math.asin(max(sin_snap, -1.0)) + 2.0 * PRESS_EXTRA)
-        skip = frozenset(n for n in (cable.last, clip.name) if n is not None)
+        skip = self.overlapping(frozenset(n for n in (cable.last, clip.name) if n is not None))
         up = np.array([0.0, 0.0, 1.0])
         for out in (_unit(_flat(seat - c)), slot):
             points = [
@@ -1309,9 +1309,9 @@ class _Planner:
                 # the gripper and its tail: the cable pressed onto this clip
                 # may rest on the next one's jaws (random board 208802845's
                 # F1 snapped in so), a gripper pressing onto it may not
-                hit = gripper_collision(point, self.problem.fixtures, self.overlapping(skip))
+                hit = gripper_collision(point, self.problem.fixtures, skip)
                 if hit is None:
-                    hit = self.tail_hit(cable, point, exit_top, self.overlapping(skip))
+                    hit = self.tail_hit(cable, point, exit_top, skip)
                 if hit is not None:
                     return hit
         return None
