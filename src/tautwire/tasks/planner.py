@@ -1085,13 +1085,20 @@ class _Planner:
                 g = previous + (point - previous) * (k / 8.0)
                 hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is None:
-                    hit = gripper_collision(g, self.problem.fixtures, skip)
-                if hit is None:
-                    hit = self.tail_hit(cable, g, pivot, skip)
+                    hit = self.held_hit(cable, g, pivot, skip)
                 if hit is not None:
                     return hit
             previous = point
         return None
+
+    def held_hit(
+        self, cable: _Cable, gripper: FloatArray, pivot: FloatArray, skip: frozenset[str]
+    ) -> Collision | None:
+        """The fixture (if any) the gripper at ``gripper`` [m] or the tail beyond it runs into."""
+        hit = gripper_collision(gripper, self.problem.fixtures, skip)
+        if hit is None:
+            hit = self.tail_hit(cable, gripper, pivot, skip)
+        return hit
 
     def arc(
         self, c: FloatArray, start: FloatArray, end: FloatArray, sign: float
@@ -1309,9 +1316,7 @@ class _Planner:
                 # the gripper and its tail: the cable pressed onto this clip
                 # may rest on the next one's jaws (random board 208802845's
                 # F1 snapped in so), a gripper pressing onto it may not
-                hit = gripper_collision(point, self.problem.fixtures, skip)
-                if hit is None:
-                    hit = self.tail_hit(cable, point, exit_top, skip)
+                hit = self.held_hit(cable, point, exit_top, skip)
                 if hit is not None:
                     return hit
         return None
