@@ -57,7 +57,7 @@ def _fed(
     span: float = 0.4,
     seed: int = 0,
     noise: float = 0.08,
-    peg: tuple[np.ndarray, float] | None = None,
+    peg: tuple[np.ndarray, float, float] | None = None,
 ) -> BiasCheck:
     """A check fed T u + b + noise at its own set points, every 4 ms."""
     rng = np.random.default_rng(seed)
@@ -136,8 +136,8 @@ def test_rotation_ends_with_the_check(bias: np.ndarray) -> None:
     assert ctx.estimator.circling
 
 
-def _fed_peg(bias: np.ndarray, radius: float = 0.006) -> BiasCheck:
-    return _fed(bias, seed=3, noise=0.03, peg=(np.array([0.0, 0.0, 1.0]), radius))
+def _fed_peg(bias: np.ndarray, radius: float = 0.006, bearing: float = 0.0) -> BiasCheck:
+    return _fed(bias, seed=3, noise=0.03, peg=(np.array([0.0, 0.0, 1.0]), radius, bearing))
 
 
 def test_a_pegs_shift_is_judged_normal_to_and_along_its_axis() -> None:
@@ -151,4 +151,17 @@ def test_a_pegs_shift_is_judged_normal_to_and_along_its_axis() -> None:
     assert not ok
     # 0.03 N sideways: 6 mm normal to the axis, beyond half the tolerance
     ok, detail, _ = _fed_peg(np.array([0.018, 0.024, 0.0])).verdict()
+    assert not ok and "normal to the peg's axis" in detail
+
+
+def test_a_pegs_axial_limit_is_its_bearing_radius_and_its_normal_one_its_own() -> None:
+    """Robustness trial 6: 9.2 mm normal to a 9.9 mm peg's axis is beyond half its tolerance."""
+    check = _fed_peg(np.zeros(3), radius=0.0099, bearing=0.0154)
+    assert check.limit == pytest.approx(0.5 * (0.0099 + 0.003))
+    assert check.axial_limit == pytest.approx(0.0154 + 0.003)
+    # 0.04 N up at 2 N over 0.4 m: 8 mm along the axis, within the bearing's 18.4 mm
+    ok, _, _ = _fed_peg(np.array([0.0, 0.0, 0.04]), radius=0.0099, bearing=0.0154).verdict()
+    assert ok
+    # 0.04 N sideways: 8 mm normal to the axis, beyond 6.45 mm
+    ok, detail, _ = _fed_peg(np.array([0.024, 0.032, 0.0]), radius=0.0099, bearing=0.0154).verdict()
     assert not ok and "normal to the peg's axis" in detail

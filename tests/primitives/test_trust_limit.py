@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from tautwire.estimation.contact_point_filter import FilterState
+from tautwire.estimation.round_contact import RADIUS_MARGIN
 from tautwire.primitives.model_estimator import (
     CONTACT_TOLERANCE,
     POINT_TRUST_FRACTION,
@@ -67,3 +68,14 @@ def test_a_design_fixture_keeps_its_design_until_its_estimate_is_trusted() -> No
     est._update_graph(obs, 1, 0)
     assert est.contact_estimate().trusted  # type: ignore[union-attr]
     assert ctx.graph.points[0].position == pytest.approx(off, abs=1e-12)
+
+
+def test_the_circled_pegs_radius_is_the_designs_else_the_bearing_radius_less_its_margin() -> None:
+    """I's bias check judges a peg's shift on this radius (robustness trial 6)."""
+    est = context(round_fixtures={"A1": (CONTACT, 0.0155)}).estimator
+    est._track(0)
+    assert est.peg_radius() is None  # not rotating
+    est.rotation = (np.array([0.0, 0.0, 1.0]), 1.0)
+    assert est.peg_radius() == pytest.approx(0.0155 - RADIUS_MARGIN)
+    est.peg_radii = {"A1": 0.0099}
+    assert est.peg_radius() == pytest.approx(0.0099)

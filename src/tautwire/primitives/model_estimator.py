@@ -353,6 +353,9 @@ class ModelEstimator:
         #: The tops [m] of the design's pegs by name, where known: a point
         #: higher than ``PEG_TOP_MARGIN`` above one is not on that peg.
         self.peg_tops: dict[str, float] = {}
+        #: The radii [m] of the design's pegs by name, where known: a peg
+        #: estimate's tolerance is its radius plus ``CONTACT_TOLERANCE``.
+        self.peg_radii: dict[str, float] = {}
         #: The design's clips by name, where known: (seat [m], unit slot
         #: direction, half length [m]). A clip's contact lies on its slot.
         self.slots: dict[str, tuple[FloatArray, FloatArray, float]] = {}
@@ -1575,6 +1578,22 @@ class ModelEstimator:
     def round_contact(self) -> tuple[FloatArray, float, float] | None:
         """(axis, sense, R [m]) while rotating about a round contact, else None (see below)."""
         return self._round_contact()
+
+    def peg_radius(self) -> float | None:
+        """The radius [m] of the peg being circled, for its tolerance; None off a peg.
+
+        The design's radius where known (:attr:`peg_radii`), else the bearing
+        radius of :meth:`round_contact` less the margin it adds (the peg's
+        plus the cable's radius, the larger).
+        """
+        c = self.contact_index
+        peg = self._round_contact()
+        if c is None or peg is None or peg[2] <= 0.0:
+            return None
+        label = self.graph.points[c].label
+        if label in self.peg_radii:
+            return self.peg_radii[label]
+        return peg[2] - RADIUS_MARGIN
 
     def _round_contact(self) -> tuple[FloatArray, float, float] | None:
         """(axis, sense, R) while rotating about a round contact of the design, else None.
