@@ -271,9 +271,7 @@ def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:
     # NEAR lies right of the cable leaving C1: kept on the cable's left, the
     # cable is lifted over its top 10 cm from C1, 21 deg up out of the clip
     near = BoardFixture("NEAR", "peg", (0.45, 0.0, 0.05), radius=0.006, height=0.06)
-    # C1 along the line from A1, so that F (not C) clips it
-    along = -math.atan2(0.10, 0.30)
-    board = (*(replace(f, yaw=along) if f.name == "C1" else f for f in BOARD), near)
+    board = (*BOARD, near)
     route = [RouteEntry("C1"), RouteEntry("NEAR", "left")]
     problem = RouteProblem(board, (cable("W1", route, length=0.9),), ROBOT)
     with pytest.raises(RouteError) as info:

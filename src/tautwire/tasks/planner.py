@@ -71,14 +71,9 @@ Point = tuple[float, float, float]
 Side = Literal["left", "right"]
 ParamValue = bool | float | str | list[float]
 
-#: F is planned only where the slot crosses the cable's line by at most this
-#: [rad]: where F is measured to seat, well inside its own limit
-#: (``MAX_SLOT_ANGLE``; the contact it aims from is an estimate). On a level
-#: anchor-clip board F seated slots at -8 to 15 deg and missed at 17 and 20;
-#: on the random boards it seated at 7.5 and 12 deg and missed at 12, 14, 15
-#: and 19 (the cable's entry end leaves the jaws' groove). Beyond it C, with
-#: the other gripper, or a refusal that says so.
-SLOT_ANGLE = min(MAX_SLOT_ANGLE - math.radians(5.0), math.radians(10.0))
+#: F is planned only where the slot is this much inside F's own limit
+#: (the contact it aims from is an estimate) [rad].
+SLOT_ANGLE = MAX_SLOT_ANGLE - math.radians(5.0)
 #: Least cable [m] a gripper keeps beyond the point it last routed.
 MIN_LEAD = 0.04
 #: Cable [m] beyond the needed point a slide (E) or a hand-over leaves.
