@@ -50,6 +50,31 @@ def test_peg_contact_lies_on_the_axis_at_the_cable_height() -> None:
     assert truth.contact("nothing") is None
 
 
+@pytest.mark.parametrize(
+    ("gap", "height", "lies"),
+    [(0.0005, 0.12, True), (0.002, 0.12, False), (0.0005, 0.16, False)],
+)
+def test_a_cable_lying_against_a_peg_touches_it_without_a_contact(
+    monkeypatch: pytest.MonkeyPatch, gap: float, height: float, lies: bool
+) -> None:
+    """Random board 1808415002: a released cable fell down its pegs, 0.2 mm off one."""
+    from tautwire.experiments.truth import true_contacts
+
+    truth = GroundTruth(peg_scene())  # P: axis (0.15, 0.05), radius 6 mm, top 0.15 m
+    off = 0.006 + truth.cable_radius("W") + gap
+    line = np.array([[0.0, 0.05 + off, height], [0.3, 0.05 + off, height]])
+    monkeypatch.setattr(truth, "polyline", lambda cable: line)
+    monkeypatch.setattr(truth, "contacts", lambda: ())  # no contact acts at this instant
+    point = truth.against_peg("P", "W")
+    if lies:
+        assert point is not None and np.allclose(point, [0.15, 0.05, height])
+        assert np.allclose(true_contacts(truth, "W")["P"], point)
+    else:
+        assert point is None and "P" not in true_contacts(truth, "W")
+    with pytest.raises(InvalidArgumentError, match="not a peg"):
+        truth.against_peg("A", "W")
+
+
 def _through_the_fingers_left_out(truth: GroundTruth, span: TautSpan) -> bool:
     """Whether the span's segments are exactly those with no vertex within GRIP_ZONE of the hold."""
     arc = truth.arc_lengths(span.cable)

@@ -194,12 +194,21 @@ def true_contacts(truth: GroundTruth, cable: str) -> dict[str, FloatArray]:
     A clip that holds the cable in its jaws (:meth:`GroundTruth.clipped`)
     counts even where the cable lies in its seat unloaded, touching none of
     its geoms (F and C lift back to leave it so); its point is then the
-    cable's point nearest the seat.
+    cable's point nearest the seat. A peg that the cable lies against
+    within a millimetre of its surface counts too, at that height
+    (:meth:`GroundTruth.against_peg`: a released cable falling down a peg).
     """
     out = {c.fixture: c.point for c in truth.contacts() if c.cable == cable}
     for name in truth.fixture_names():
-        if name not in out and truth.fixture_type(name) == "clip" and truth.clipped(name, cable):
+        if name in out:
+            continue
+        kind = truth.fixture_type(name)
+        if kind == "clip" and truth.clipped(name, cable):
             out[name] = truth.seat(name, cable)
+        elif kind == "peg":
+            point = truth.against_peg(name, cable)
+            if point is not None:
+                out[name] = point
     return out
 
 

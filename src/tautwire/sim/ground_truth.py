@@ -25,6 +25,9 @@ IntArray = NDArray[np.int64]
 #: radius) that the cable is in contact with counts as touching it: MuJoCo's
 #: contact margin and the polygonal cable keep the vertices a few mm off.
 NEAR = 0.005
+#: A cable this close [m] to a peg's surface (beyond the cable's radius)
+#: lies against it though no contact acts at the instant (:meth:`GroundTruth.against_peg`).
+RESTING = 0.001
 #: Segments with a vertex within this rest length [m] of a held vertex run
 #: through the fingers (pads 20 mm long): their tendons also carry the pads'
 #: contact forces (up to several times the cable's tension where the cable
@@ -247,6 +250,34 @@ class GroundTruth:
         raise InvalidArgumentError(
             f"no fixture named {name!r} (fixtures: {list(self.fixture_names())})"
         )
+
+    def against_peg(self, peg: str, cable: str) -> FloatArray | None:
+        """Where ``cable`` lies against peg ``peg`` with no contact force, or None.
+
+        The point [m] on the peg's axis at the height of the cable's segment
+        point nearest the axis (horizontally), when that point lies within
+        the peg's radius plus the cable's plus :data:`RESTING` of the axis
+        and below the peg's top: a cable that lies against the peg, resting
+        or falling, touches it though MuJoCo reports no contact at this
+        instant (random board 1808415002: W1 released after its last clip
+        fell down the pegs it was wound round, 0.2 mm off F1's surface at
+        the step's end, and touched it again a period later).
+        """
+        spec = self._fixture(peg)
+        if not isinstance(spec, PegSpec):
+            raise InvalidArgumentError(f"fixture {peg!r} is not a peg")
+        pts = self.polyline(cable)
+        p, q = pts[:-1], pts[1:]
+        t = _nearest_parameters(p[:, :2], q[:, :2], spec.position[:2])
+        point = p + t[:, None] * (q - p)
+        d = np.hypot(point[:, 0] - spec.position[0], point[:, 1] - spec.position[1])
+        top = spec.position[2] + spec.height
+        radius = self.cable_radius(cable)
+        hits = np.flatnonzero((d <= spec.radius + radius + RESTING) & (point[:, 2] <= top))
+        if not len(hits):
+            return None
+        k = int(hits[np.argmin(d[hits])])
+        return np.array([spec.position[0], spec.position[1], float(point[k, 2])])
 
     def clipped(self, clip: str, cable: str) -> bool:
         """Whether ``cable`` truly sits in the jaws of clip ``clip``.
