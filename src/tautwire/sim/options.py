@@ -43,12 +43,6 @@ class SimOptions:
             held closed around the cable without squeezing it, so the cable
             pivots at the grasp point as in the paper's point model.
         hold_clearance: Gap [m] between each finger pad and the held cable.
-            Wide enough that the segments on either side of the held vertex
-            can tilt by a millimetre without touching a pad: at 0.2 mm a
-            regrip's cable (random board 208802845, D after E) bore on both
-            pads in an S, the weld and the pads fought, the wrist read 5 N
-            of sideways force at 1.5 N of tension and D pulled the cable to
-            19 N; at 1 mm it pivots at the grasp point.
         pad_exit: Arc distance [m] from a held point to the vertices on
             either side of it; more than the pads' half length (0.01 m), so
             that the initial cable runs straight through the closed fingers.
@@ -85,7 +79,7 @@ class SimOptions:
     peg_friction: float = 0.2
     table_friction: float = 0.3
     hold_grip_force: float = 10.0
-    hold_clearance: float = 1e-3
+    hold_clearance: float = 2e-4
     pad_exit: float = 0.012
     open_force: float = 5.0
     max_opening: float = 0.04
