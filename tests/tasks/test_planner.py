@@ -271,7 +271,8 @@ def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:
     # NEAR lies right of the cable leaving C1: kept on the cable's left, the
     # cable is lifted over its top 10 cm from C1, 21 deg up out of the clip
     near = BoardFixture("NEAR", "peg", (0.45, 0.0, 0.05), radius=0.006, height=0.06)
-    board = (*BOARD, near)
+    # without C2, which the slide out of C1 passes over too low from where F leaves the gripper
+    board = (*(f for f in BOARD if f.name != "C2"), near)
     route = [RouteEntry("C1"), RouteEntry("NEAR", "left")]
     problem = RouteProblem(board, (cable("W1", route, length=0.9),), ROBOT)
     with pytest.raises(RouteError) as info:
@@ -467,3 +468,30 @@ def test_a_push_onto_the_next_clip_with_no_hand_over_is_refused() -> None:
     board = (BOARD[0], BOARD[1], BOARD[5], CLIP, NEXT)
     with pytest.raises(RouteError, match=r"pressing the cable into C takes the .* into NEXT"):
         plan_routes(RouteProblem(board, (far, other), ROBOT))
+
+
+def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
+    """F leaves the gripper level with the jaws' top, not where it aimed.
+
+    Slid out from there along C1's slot, the fingers would pass over C2 too
+    low (random board 208802845: E after F1 carried them onto F3's jaws); the
+    plan first turns the cable up about C1's exit, no steeper than the clip holds.
+    """
+    from tautwire.tasks.planner import CLIP_RISE
+
+    c6 = BoardFixture("C6", "clip", (0.58, 0.20, 0.08), yaw=0.435, push_force=2.5, length=0.03)
+    route = [RouteEntry("C1"), RouteEntry("C6")]
+    p = plan_routes(RouteProblem((*BOARD, c6), (cable("W1", route, length=0.9),), ROBOT))
+    steps = list(p.steps)
+    k = next(i for i, s in enumerate(steps) if s.why.startswith("lift the cable clear"))
+    assert steps[k - 1].params.get("clip") == "C1"
+    assert steps[k].primitive == "move" and steps[k + 1].primitive == "single_arm_sliding"
+    lifted = np.asarray(steps[k].params["to"], dtype=float)
+    exit_point = np.array([0.365, 0.10, 0.08])  # C1's exit towards C6
+    run = float(np.hypot(*(lifted - exit_point)[:2]))
+    rise = math.atan2(float(lifted[2] - exit_point[2]), run)
+    assert 0.0 < rise <= CLIP_RISE + 1e-9
+    # without C2 in the way the slide needs no lift
+    board = tuple(f for f in (*BOARD, c6) if f.name != "C2")
+    p = plan_routes(RouteProblem(board, (cable("W1", route, length=0.9),), ROBOT))
+    assert not any(s.why.startswith("lift the cable clear") for s in p.steps)

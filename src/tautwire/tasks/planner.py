@@ -117,6 +117,9 @@ OVER_PEG = 0.02
 #: pulled across the slot too it comes out (random board 1808415002: lifted
 #: over F3 at 25 deg from F2 and 60 deg across its slot, W1 left F2, slack).
 CLIP_RISE = MAX_FAR_RISE
+#: Step [rad] of the rise a gripper is lifted by, about the last fixed point,
+#: before a slide that would otherwise run into a fixture.
+LIFT_STEP = math.radians(2.0)
 #: Cable length [m] between the two grippers of a parallel clip (H + C).
 SPAN = 0.12
 #: H grasps at least this far [m] from either end of the taut edge.
@@ -521,6 +524,9 @@ class _Cable:
     fixture: str | None = None
     steps: list[int] = field(default_factory=list)
     last: str | None = None  # the fixture at the last fixed point
+    #: Where F leaves the gripper, lower than ``gripper`` (see ``_Planner.after_push``);
+    #: None once a step moves it again.
+    pressed: FloatArray | None = None
 
     @property
     def free(self) -> float:
@@ -687,6 +693,7 @@ class _Planner:
         taut = cable.contact + cable.free * _unit(cable.gripper - cable.contact)
         self.check_reach(cable, taut, "tensioning")
         cable.gripper = taut
+        cable.pressed = None
         self.emit(
             cable,
             "single_arm_tension",
@@ -870,6 +877,7 @@ class _Planner:
                     **({"catch": peg.name} if catches else {}),
                 )
         cable.gripper = motion.catch
+        cable.pressed = None
         rest = motion.rest
         if rest > SMALL_TURN:
             # the moves kept the gripper's orientation while the cable swept round
@@ -892,6 +900,7 @@ class _Planner:
             )
             left = max(radius - rho * rest, MIN_LEAD)
             cable.gripper = centre + _turn(_unit(start), sign * rest) * left
+            cable.pressed = None
         self.advance_peg(cable, peg, entry, following)
         cable.contact[2] = z_pass
         cable.last = peg.name
@@ -1263,9 +1272,38 @@ class _Planner:
             arm=cable.arm,
             clip=clip.name,
         )
+        cable.pressed = self.after_push(cable, clip, exit_point, target)
         cable.s_contact += to_exit
         cable.contact = exit_point
         cable.last = clip.name
+
+    def after_push(
+        self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, aimed: FloatArray
+    ) -> FloatArray:
+        """Where F leaves the gripper [m]: on the slot's axis, lifted back only to rest.
+
+        F pivots the gripper about the exit raised to the jaws' top, turns it
+        onto the slot and lifts it back only to the straight line from the
+        last fixed point through the seat, or to where the push began if that
+        is lower (``SingleArmClipping``): on a level board level with the
+        jaws' top, 10-20 mm below where it was aimed. A slide from there
+        runs low (random board 208802845: E after F1 carried the fingers
+        onto F3's jaws, and the wrist read the jaws' push with the cable's).
+        """
+        c = cable.contact
+        seat = _vec(clip.position)
+        slot, _, _ = self.slot_line(cable, clip)
+        top = exit_point.copy()
+        top[2] = float(clip.position[2]) + JAW_TOP
+        ahead = float(np.linalg.norm(_flat(aimed - top)))
+        radius = math.hypot(ahead, float(aimed[2] - top[2]))
+        start = math.atan2(-float(aimed[2] - top[2]), max(ahead, 1e-9))
+        rest = math.atan2(float(c[2] - seat[2]), max(float(np.linalg.norm(_flat(seat - c))), 1e-9))
+        angle = max(rest, start)
+        out: FloatArray = top + radius * (
+            math.cos(angle) * slot - math.sin(angle) * np.array([0.0, 0.0, 1.0])
+        )
+        return out
 
     def pivot_collision(
         self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, r: float
@@ -1394,6 +1432,7 @@ class _Planner:
             cable, "release", "let go with the gripper on the near side of the clip", arm=other
         )
         cable.gripper = far
+        cable.pressed = None
         cable.s_contact = grasp + 0.5 * SPAN + 0.5 * clip.length
         cable.contact = exit_point
         cable.last = clip.name
@@ -1426,7 +1465,29 @@ class _Planner:
         distance = min(distance + max(lead - MIN_LEAD, 0.0), cable.spec.length - TAIL - cable.at)
         out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
         self.check_reach(cable, out, "sliding the cable out")
-        self.require_clear(cable, cable.contact, cable.gripper, [out], "sliding the cable out")
+        # checked from where the gripper really is (F leaves it low); the
+        # fixture the slide brings cable towards is not checked: the slide
+        # ends short of it, and the moves after it aim the cable over it
+        start = cable.gripper if cable.pressed is None else cable.pressed
+        low = start + _unit(start - cable.contact) * distance
+        skip = frozenset(n for n in (cable.last, cable.fixture) if n is not None)
+        if self.path_collision(cable, cable.contact, start, [low], skip) is not None:
+            lifted = self.slide_lift(cable, start, distance, skip)
+            if lifted is not None:
+                self.emit(
+                    cable,
+                    "move",
+                    "lift the cable clear of the board before sliding it out",
+                    arm=cable.arm,
+                    to=[float(v) for v in lifted],
+                    taut=True,
+                )
+                start = lifted
+                low = out = start + _unit(start - cable.contact) * distance
+                self.check_reach(cable, out, "sliding the cable out")
+        self.require_clear(
+            cable, cable.contact, start, [low], "sliding the cable out", cable.fixture
+        )
         self.emit(
             cable,
             "single_arm_sliding",
@@ -1444,6 +1505,39 @@ class _Planner:
         )
         cable.at += distance
         cable.gripper = out
+        cable.pressed = None
+
+    def slide_lift(
+        self, cable: _Cable, start: FloatArray, distance: float, skip: frozenset[str]
+    ) -> FloatArray | None:
+        """A gripper point [m] about the last fixed point from which a slide clears the board.
+
+        The gripper turns up about the last fixed point in steps of
+        ``LIFT_STEP``, up to ``CLIP_RISE`` above the horizontal when the
+        cable leaves a clip (steeper draws it up out of the jaws), else up
+        to ``MAX_ANGLE``; the lowest rise whose lift and slide both clear
+        every fixture and stay within reach. None if none does.
+        """
+        c = cable.contact
+        radius = float(np.linalg.norm(start - c))
+        horizontal = _unit(_flat(start - c))
+        last = self.fixtures.get(cable.last) if cable.last else None
+        limit = CLIP_RISE if last is not None and last.kind == "clip" else MAX_ANGLE
+        rise = math.atan2(float(start[2] - c[2]), float(np.linalg.norm(_flat(start - c))))
+        rise = max(rise, 0.0)
+        while rise < limit:
+            rise = min(rise + LIFT_STEP, limit)
+            lifted = c + radius * (
+                math.cos(rise) * horizontal + math.sin(rise) * np.array([0.0, 0.0, 1.0])
+            )
+            out = lifted + _unit(lifted - c) * distance
+            if (
+                self.robot.reach.contains([float(v) for v in lifted])
+                and self.robot.reach.contains([float(v) for v in out])
+                and self.path_collision(cable, c, start, [lifted, out], skip) is None
+            ):
+                return lifted
+        return None
 
     def hand_over(self, cable: _Cable, at: float, what: str) -> None:
         """Hand the cable over: the other gripper grasps at ``at`` [m], the first lets go."""
@@ -1468,6 +1562,7 @@ class _Planner:
         self.emit(cable, "release", "hand over: let go with the first gripper", arm=cable.arm)
         self.holder[cable.arm] = None
         cable.arm, cable.at, cable.gripper = other, at, grasp
+        cable.pressed = None
         self.holder[other] = cable.spec.name
         self.emit(
             cable,
