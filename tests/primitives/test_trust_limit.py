@@ -46,20 +46,6 @@ def test_a_peg_is_trusted_on_the_std_it_reports_against_its_wider_tolerance() ->
     assert not est._trusted_variance(_state(4.8e-3))
 
 
-def test_a_design_pegs_tolerance_is_its_radius_plus_the_contact_tolerance() -> None:
-    """As the truth check states it: the cable's radius is no part of it."""
-    est = context(round_fixtures={"A1": (CONTACT, 0.0119)}).estimator
-    est.peg_radii = {"A1": 0.006}
-    est._track(0)
-    limit = est.trust_limit()
-    assert limit == pytest.approx(POINT_TRUST_FRACTION * (CONTACT_TOLERANCE + 0.006))
-    # random board 2082005138's F6: 4.6 mm reported (the filter's std and the
-    # round line model's error), 9.5 mm off (tolerance 9 mm); trusted before
-    reported = 4.6e-3
-    assert reported < POINT_TRUST_FRACTION * (CONTACT_TOLERANCE + 0.0119 - RADIUS_MARGIN)
-    assert not est._trusted_variance(_state(np.sqrt(reported**2 - ROUND_LINE_ERROR**2)))
-
-
 def test_a_design_fixture_keeps_its_design_until_its_estimate_is_trusted() -> None:
     # the shipped harness's A2: tensioning's nearly parallel lines met 8-23 mm
     # along the cable at a std of several mm; written into the model, that

@@ -1328,19 +1328,14 @@ class ModelEstimator:
         """Largest std [m] at which the model trusts an estimate of ``point`` (default its own).
 
         ``POINT_TRUST_FRACTION`` of the point's tolerance (``CONTACT_TOLERANCE``;
-        for a peg plus the design's peg radius, as the truth check states it,
-        or where that is unknown plus peg radius + cable radius), on the std
-        the model reports (:meth:`_trusted_variance`); at most
-        ``trusted_std``. With the cable's radius in it, a 6 mm peg was
-        trusted at a 4.6 mm std: 9.5 mm off, tolerance 9 mm (random board
-        2082005138's F6, a false success).
+        for a peg plus peg radius + cable radius of the board design), on the
+        std the model reports (:meth:`_trusted_variance`); at most
+        ``trusted_std``.
         """
         if point is None:
             point = self._filter_point
         tolerance = CONTACT_TOLERANCE
-        if point is not None and point.label in self.peg_radii:
-            tolerance += self.peg_radii[point.label]
-        elif point is not None and point.label in self.round_fixtures:
+        if point is not None and point.label in self.round_fixtures:
             tolerance += self.round_fixtures[point.label][1] - RADIUS_MARGIN
         return min(self.trusted_std, POINT_TRUST_FRACTION * tolerance)
 
