@@ -567,6 +567,12 @@ class _Planner:
     def fail(self, cable: _Cable, reason: str) -> RouteError:
         return RouteError(cable.spec.name, cable.entry, cable.fixture, reason)
 
+    def emit_move(self, cable: _Cable, point: FloatArray, why: str, **params: ParamValue) -> None:
+        """A taut ``move`` of the cable's gripper to ``point`` [m]."""
+        self.emit(
+            cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True, **params
+        )
+
     def emit(self, cable: _Cable, primitive: str, why: str, **params: ParamValue) -> None:
         values: dict[str, ParamValue] = {}
         for key, value in params.items():
@@ -860,21 +866,12 @@ class _Planner:
             self.check_reach(cable, point, "winding round the peg")
         for k, (point, why) in enumerate(motion.moves):
             if k < motion.catch_from:
-                self.emit(
-                    cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True
-                )
+                self.emit_move(cable, point, why)
             else:
                 # the last move of the catch hands the peg to the model
                 catches = k == len(motion.moves) - 1
-                self.emit(
-                    cable,
-                    "move",
-                    why,
-                    arm=cable.arm,
-                    to=[float(v) for v in point],
-                    taut=True,
-                    observe=False,
-                    **({"catch": peg.name} if catches else {}),
+                self.emit_move(
+                    cable, point, why, observe=False, **({"catch": peg.name} if catches else {})
                 )
         cable.gripper = motion.catch
         cable.pressed = None
@@ -1255,14 +1252,7 @@ class _Planner:
             cable, c, cable.gripper, waypoints, "bringing the cable over the clip", clip.name
         )
         for point in waypoints:
-            self.emit(
-                cable,
-                "move",
-                "bring the cable over the clip, along its slot",
-                arm=cable.arm,
-                to=[float(v) for v in point],
-                taut=True,
-            )
+            self.emit_move(cable, point, "bring the cable over the clip, along its slot")
         cable.gripper = target
         self.emit(cable, "gripper_alignment", "align the gripper with the cable", arm=cable.arm)
         self.emit(
@@ -1474,13 +1464,8 @@ class _Planner:
         if self.path_collision(cable, cable.contact, start, [low], skip) is not None:
             lifted = self.slide_lift(cable, start, distance, skip)
             if lifted is not None:
-                self.emit(
-                    cable,
-                    "move",
-                    "lift the cable clear of the board before sliding it out",
-                    arm=cable.arm,
-                    to=[float(v) for v in lifted],
-                    taut=True,
+                self.emit_move(
+                    cable, lifted, "lift the cable clear of the board before sliding it out"
                 )
                 start = lifted
                 low = out = start + _unit(start - cable.contact) * distance
