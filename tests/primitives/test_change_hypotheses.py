@@ -396,3 +396,23 @@ def test_a_contact_peg_s_height_is_unknown_while_its_lines_do_not_count() -> Non
     est._unseen_peg_height(peg, 0.13 - 0.05)  # the gripper 50 mm down
     assert math.sqrt(peg.covariance[2, 2]) == pytest.approx(0.05)
     assert np.sqrt(np.diag(peg.covariance))[:2] == pytest.approx([0.002, 0.002])
+
+
+def test_a_nearly_straight_path_has_no_centre_to_contradict_the_lines() -> None:
+    """Random board 483199372: I about a clip read a centre 618 km off as a sensor bias."""
+    est = context().estimator
+    est._track(0)
+    est.contact_filter.start(CONTACT.copy(), 1e-6 * np.eye(3))
+    est.rotation = (np.array([0.0, 0.0, 1.0]), 1.0)
+    start = CONTACT + np.array([0.3, 0.0, 0.0])
+    for k in range(40):  # 4 mm a sample along a straight line, 0.04 s apart: 28 deg
+        est._sample_path(0.04 * k, start + np.array([0.0, 0.004 * k, 0.0]), 3.0)
+    # the circle fit's centre lay 88 m away: no centre, no contradiction
+    assert est._path_estimate is None
+    # a circle about the contact still gives a centre near it
+    est.rotation = (np.array([0.0, 0.0, 1.0]), 1.0)
+    for k in range(40):
+        a = 0.02 * k
+        est._sample_path(2.0 + 0.04 * k, CONTACT + 0.3 * np.array([np.cos(a), np.sin(a), 0.0]), 3.0)
+    assert est._path_estimate is not None
+    assert float(np.linalg.norm(est._path_estimate[0][:2] - CONTACT[:2])) < 0.01

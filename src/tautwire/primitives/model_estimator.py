@@ -78,6 +78,11 @@ PATH_FLOOR = 5e-4
 #: not fused; beyond :data:`PATH_CONFLICT` as well, they contradict each other.
 PATH_GATE = 5.0
 PATH_CONFLICT = 8.0
+#: A path's centre farther from the gripper than this many times the
+#: gripper's distance from the contact estimate is no centre it circles: the
+#: path is nearly straight and its circle's centre unbounded (random board
+#: 483199372's I about clip F6: a centre 618 km off, read as a sensor bias).
+PATH_REACH = 3.0
 #: Systematic direction error [rad] of a point contact's lines that samples do
 #: not average out (the moving cable's drag, sag and weight compensation): at
 #: the distance d it puts the lines' estimate d times this off. Measured on
@@ -622,8 +627,12 @@ class ModelEstimator:
         estimate = self._path.estimate(kf.x)
         if estimate is not None:
             centre, cov = estimate
-            cov = cov + PATH_FLOOR**2 * _plane_projector(self._path_axis)
-            estimate = (centre, cov)
+            plane = _plane_projector(self._path_axis)
+            reach = float(np.linalg.norm(plane @ (p_gripper - kf.x)))
+            if float(np.linalg.norm(plane @ (p_gripper - centre))) > PATH_REACH * reach:
+                estimate = None  # a nearly straight path: inconclusive
+            else:
+                estimate = (centre, cov + PATH_FLOOR**2 * plane)
         self._path_estimate = estimate
         if estimate is None:
             return
