@@ -358,8 +358,8 @@ class ModelEstimator:
         #: The tops [m] of the design's pegs by name, where known: a point
         #: higher than ``PEG_TOP_MARGIN`` above one is not on that peg.
         self.peg_tops: dict[str, float] = {}
-        #: The radii [m] of the design's pegs by name, where known: a peg
-        #: estimate's tolerance is its radius plus ``CONTACT_TOLERANCE``.
+        #: The radii [m] of the design's pegs by name, where known: I's bias
+        #: check judges a peg's shift against its radius plus 3 mm (:meth:`peg_radius`).
         self.peg_radii: dict[str, float] = {}
         #: The design's clips by name, where known: (seat [m], unit slot
         #: direction, half length [m]). A clip's contact lies on its slot.
