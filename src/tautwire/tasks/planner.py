@@ -525,7 +525,7 @@ class _Cable:
     steps: list[int] = field(default_factory=list)
     last: str | None = None  # the fixture at the last fixed point
     #: Where F leaves the gripper, lower than ``gripper`` (see ``_Planner.after_push``);
-    #: None once a step moves it again.
+    #: None once another step is planned (``_Planner.emit``).
     pressed: FloatArray | None = None
 
     @property
@@ -574,6 +574,7 @@ class _Planner:
         )
 
     def emit(self, cable: _Cable, primitive: str, why: str, **params: ParamValue) -> None:
+        cable.pressed = None  # any step moves the gripper on from where F left it
         values: dict[str, ParamValue] = {}
         for key, value in params.items():
             if isinstance(value, float):
@@ -699,7 +700,6 @@ class _Planner:
         taut = cable.contact + cable.free * _unit(cable.gripper - cable.contact)
         self.check_reach(cable, taut, "tensioning")
         cable.gripper = taut
-        cable.pressed = None
         self.emit(
             cable,
             "single_arm_tension",
@@ -874,7 +874,6 @@ class _Planner:
                     cable, point, why, observe=False, **({"catch": peg.name} if catches else {})
                 )
         cable.gripper = motion.catch
-        cable.pressed = None
         rest = motion.rest
         if rest > SMALL_TURN:
             # the moves kept the gripper's orientation while the cable swept round
@@ -897,7 +896,6 @@ class _Planner:
             )
             left = max(radius - rho * rest, MIN_LEAD)
             cable.gripper = centre + _turn(_unit(start), sign * rest) * left
-            cable.pressed = None
         self.advance_peg(cable, peg, entry, following)
         cable.contact[2] = z_pass
         cable.last = peg.name
@@ -1422,7 +1420,6 @@ class _Planner:
             cable, "release", "let go with the gripper on the near side of the clip", arm=other
         )
         cable.gripper = far
-        cable.pressed = None
         cable.s_contact = grasp + 0.5 * SPAN + 0.5 * clip.length
         cable.contact = exit_point
         cable.last = clip.name
@@ -1490,7 +1487,6 @@ class _Planner:
         )
         cable.at += distance
         cable.gripper = out
-        cable.pressed = None
 
     def slide_lift(
         self, cable: _Cable, start: FloatArray, distance: float, skip: frozenset[str]
@@ -1547,7 +1543,6 @@ class _Planner:
         self.emit(cable, "release", "hand over: let go with the first gripper", arm=cable.arm)
         self.holder[cable.arm] = None
         cable.arm, cable.at, cable.gripper = other, at, grasp
-        cable.pressed = None
         self.holder[other] = cable.spec.name
         self.emit(
             cable,
