@@ -18,6 +18,7 @@ from tautwire.robot.workspace import WORKSPACE
 from tautwire.scenario import parse_scenario
 from tautwire.scenario.route_problem import plan_scenario, route_problem, task_yaml
 from tautwire.tasks.planner import (
+    SPAN,
     BoardFixture,
     CableToRoute,
     Plan,
@@ -462,12 +463,85 @@ def test_f_slides_out_only_so_far_that_its_push_clears_the_next_clip() -> None:
 
 
 def test_a_push_onto_the_next_clip_with_no_hand_over_is_refused() -> None:
-    # held 0.34 m along: the gripper stands over NEXT, and the other one is busy
+    # held 0.34 m along: the gripper stands over NEXT, and the other one is
+    # busy (it holds W2, which has no route)
     far = cable("W1", [RouteEntry("C")], holds=(("left", 0.34),))
-    other = cable("W2", [RouteEntry("C3")], start="A2", holds=(("right", 0.35),), length=0.6)
+    other = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
     board = (BOARD[0], BOARD[1], BOARD[5], CLIP, NEXT)
     with pytest.raises(RouteError, match=r"pressing the cable into C takes the .* into NEXT"):
         plan_routes(RouteProblem(board, (far, other), ROBOT))
+
+
+def test_a_cable_that_needs_the_other_gripper_is_routed_after_the_cable_that_frees_it() -> None:
+    # as above, but W2's route ends in a clip: routed first, it frees the
+    # right gripper, which then takes W1 over nearer C
+    far = cable("W1", [RouteEntry("C")], holds=(("left", 0.34),))
+    other = cable("W2", [RouteEntry("C3")], start="A2", holds=(("right", 0.35),), length=0.6)
+    board = (BOARD[0], BOARD[1], BOARD[5], CLIP, NEXT)
+    p = plan_routes(RouteProblem(board, (far, other), ROBOT))
+    assert [c.name for c in p.cables] == ["W2", "W1"]
+    assert p.steps[0].params["cable"] == "W2"
+    f = [s.params for s in p.steps if s.primitive == "single_arm_clipping"]
+    assert [(s["cable"], s["clip"], s["arm"]) for s in f] == [
+        ("W2", "C3", "right"),
+        ("W1", "C", "right"),
+    ]
+
+
+def _angled_clip(angle_deg: float) -> BoardFixture:
+    """A clip 0.2 m from A1 whose slot is ``angle_deg`` off the line from A1."""
+    return BoardFixture(
+        "ANG", "clip", (0.25, 0.20, 0.08), yaw=math.radians(angle_deg), push_force=2.0, length=0.03
+    )
+
+
+@pytest.mark.parametrize("angle", [14.0, -17.0])
+def test_a_clip_beyond_f_angle_is_pressed_in_with_both_grippers_when_the_other_is_free(
+    angle: float,
+) -> None:
+    # one arm kinks the cable where it enters the clip, and the entry end
+    # stays on the jaws (a level anchor-clip scene: F missed 17 and 20 deg)
+    w1 = cable("W1", [RouteEntry("ANG")], holds=(("left", 0.45),))
+    p = plan_routes(RouteProblem((BOARD[0], _angled_clip(angle)), (w1,), ROBOT))
+    steps = names(p)
+    assert "single_arm_clipping" not in steps
+    assert steps.count("parallel_clipping") == 1
+
+
+def test_a_clip_beyond_f_angle_is_pressed_in_with_one_arm_when_the_other_is_busy() -> None:
+    w1 = cable("W1", [RouteEntry("ANG")], holds=(("left", 0.45),))
+    w2 = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    board = (BOARD[0], BOARD[1], _angled_clip(14.0))
+    p = plan_routes(RouteProblem(board, (w1, w2), ROBOT))
+    assert names(p).count("single_arm_clipping") == 1
+    assert "parallel_clipping" not in names(p)
+    # within F_ANGLE, one arm even with the other free
+    p = plan_routes(RouteProblem((BOARD[0], _angled_clip(8.0)), (w1,), ROBOT))
+    assert "parallel_clipping" not in names(p)
+
+
+@pytest.mark.parametrize("held", [0.30, 0.45, 0.55])
+def test_c_grasps_so_that_the_near_span_lies_straight_when_released(held: float) -> None:
+    """C centres the cable between its grippers over the seat; the near span must not sag.
+
+    Slack there, the release leaves it loose and the next pull drags it
+    through the clip (a level anchor-clip scene at 17 deg: 82 mm of slack).
+    """
+    w1 = cable("W1", [RouteEntry("C5")], holds=(("left", held),))
+    p = plan(w1)
+    h = next(s for s in p.steps if s.primitive == "grasp_tensioned")
+    grasp = h.params["at"]
+    assert isinstance(grasp, float)
+    slides = [s.params["distance"] for s in p.steps if s.primitive == "single_arm_sliding"]
+    at = held + sum(float(d) for d in slides if isinstance(d, float))
+    half = 0.5 * (at - grasp)  # the grippers end 2 half apart, centred on the seat
+    assert half >= 0.5 * SPAN - 1e-9
+    seat = np.array(BOARD[7].position)
+    near = seat - half * np.array([0.0, 1.0, 0.0])  # C5's slot along y, away from A1
+    straight = float(np.linalg.norm(near[:2] - np.array(BOARD[0].position[:2])))
+    # at the seat's height the near span is straight to within its planned
+    # slack and the dip of the push (a few mm), never tens of mm
+    assert straight <= grasp <= straight + 0.02
 
 
 def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
@@ -481,7 +555,10 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
 
     c6 = BoardFixture("C6", "clip", (0.58, 0.20, 0.08), yaw=0.435, push_force=2.5, length=0.03)
     route = [RouteEntry("C1"), RouteEntry("C6")]
-    p = plan_routes(RouteProblem((*BOARD, c6), (cable("W1", route, length=0.9),), ROBOT))
+    # C1 is 18 deg off the line from A1: with the right gripper busy, F
+    busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    w1 = cable("W1", route, length=0.9)
+    p = plan_routes(RouteProblem((*BOARD, c6), (w1, busy), ROBOT))
     steps = list(p.steps)
     k = next(i for i, s in enumerate(steps) if s.why.startswith("lift the cable clear"))
     assert steps[k - 1].params.get("clip") == "C1"
@@ -493,5 +570,5 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
     assert 0.0 < rise <= CLIP_RISE + 1e-9
     # without C2 in the way the slide needs no lift
     board = tuple(f for f in (*BOARD, c6) if f.name != "C2")
-    p = plan_routes(RouteProblem(board, (cable("W1", route, length=0.9),), ROBOT))
+    p = plan_routes(RouteProblem(board, (w1, busy), ROBOT))
     assert not any(s.why.startswith("lift the cable clear") for s in p.steps)

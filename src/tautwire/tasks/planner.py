@@ -41,7 +41,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Literal
 
 import numpy as np
@@ -74,6 +74,14 @@ ParamValue = bool | float | str | list[float]
 #: F is planned only where the slot is this much inside F's own limit
 #: (the contact it aims from is an estimate) [rad].
 SLOT_ANGLE = MAX_SLOT_ANGLE - math.radians(5.0)
+#: Beyond this angle [rad] between the slot and the cable, C clips where the
+#: other gripper is free, F only where it is not. One arm kinks the cable
+#: where it enters the clip, and only the far side's slope presses that end
+#: in: on a level anchor-clip scene F seated up to 15 deg and missed 17 and
+#: 20 deg (the slot's exit end snapped in, the entry end stayed on the
+#: jaws); random boards missed clips at 11.6-18.7 deg. C holds the cable
+#: along the slot with both grippers (12, 13, 17 and -20 deg: clipped).
+F_ANGLE = math.radians(10.0)
 #: Least cable [m] a gripper keeps beyond the point it last routed.
 MIN_LEAD = 0.04
 #: Cable [m] beyond the needed point a slide (E) or a hand-over leaves.
@@ -124,6 +132,9 @@ LIFT_STEP = math.radians(2.0)
 SPAN = 0.12
 #: H grasps at least this far [m] from either end of the taut edge.
 GRASP_MARGIN = 0.04
+#: Cable [m] beyond its straight length that C's near span keeps when the
+#: cable snaps in (see ``_Planner.parallel_half_span``).
+NEAR_SLACK = 0.003
 #: Least turn [rad] of I round a peg that the route goes on from (it finds the peg).
 MIN_WIND = math.radians(20.0)
 #: Turn [rad] of I round the route's last peg past the catch: with nothing
@@ -322,12 +333,38 @@ class Plan:
 
 
 def plan_routes(problem: RouteProblem) -> Plan:
-    """Plan every cable's route, cable after cable, in the problem's order.
+    """Plan every cable's route, cable after cable.
+
+    The problem's order first; where that presses clips in with one arm
+    beyond ``F_ANGLE`` because the other gripper still holds a cable not
+    yet routed, the reverse order of two cables too, and the plan with
+    fewer such clips (the first on a tie, or the one that plans at all).
 
     Raises:
-        RouteError: for the first route entry the robot cannot do.
+        RouteError: for the first route entry the robot cannot do (in
+            the problem's order).
     """
-    return _Planner(problem).plan()
+    first: _Planner | None = None
+    error: RouteError | None = None
+    try:
+        first = _Planner(problem)
+        plan = first.plan()
+    except RouteError as exc:
+        error, first = exc, None
+    if len(problem.cables) == 2 and (first is None or first.steep_single > 0):
+        swapped = replace(problem, cables=tuple(reversed(problem.cables)))
+        try:
+            second = _Planner(swapped)
+            other = second.plan()
+        except RouteError:
+            pass
+        else:
+            if first is None or second.steep_single < first.steep_single:
+                return other
+    if first is None:
+        assert error is not None
+        raise error
+    return plan
 
 
 # ------------------------------------------------------------------ geometry
@@ -560,6 +597,7 @@ class _Planner:
             for arm, _ in cable.holds:
                 self.holder[arm] = cable.name
         self.done: dict[str, bool] = {}  # routed cable -> whether a clip holds its end
+        self.steep_single = 0  # clips F presses in beyond F_ANGLE (C's gripper was busy)
         self.clips_used: dict[str, str] = {}
 
     # -- helpers
@@ -595,6 +633,12 @@ class _Planner:
                 f"{what} takes the gripper to {_fmt(point)}, out of reach "
                 f"(expected {self.robot.reach.describe()})",
             )
+
+    def other_arm_available(self, cable: _Cable) -> bool:
+        """Whether :meth:`other_arm_free` would give the other gripper (nothing planned)."""
+        other: Arm = "right" if cable.arm == "left" else "left"
+        held = self.holder[other]
+        return held is None or bool(self.done.get(held))
 
     def other_arm_free(self, cable: _Cable) -> Arm | None:
         """The other gripper, released from a finished clipped cable if need be; or None."""
@@ -1157,7 +1201,9 @@ class _Planner:
                 f"the cable would reach the clip at {math.degrees(slope):.0f} deg from its last "
                 f"fixed point at {_fmt(c)} (expected at most {math.degrees(MAX_ANGLE):.0f} deg)",
             )
-        if angle <= SLOT_ANGLE:
+        if angle <= F_ANGLE or (angle <= SLOT_ANGLE and not self.other_arm_available(cable)):
+            if angle > F_ANGLE:
+                self.steep_single += 1
             self.plan_single_clip(cable, clip, exit_point)
         else:
             other = self.other_arm_free(cable)
@@ -1382,11 +1428,6 @@ class _Planner:
         other: Arm,
     ) -> None:
         seat = _vec(clip.position)
-        c = cable.contact
-        near = seat - 0.5 * SPAN * slot  # where the grasping gripper ends, on the near side
-        far = seat + 0.5 * SPAN * slot
-        for point in (near, far):
-            self.check_reach(cable, point, "holding the cable over the clip for C")
         drop = float(seat[2]) + JAW_TOP - PARALLEL_TABLE_CLEARANCE
         bend = min(MAX_ANGLE, math.atan2(max(drop, 0.0), 0.5 * SPAN))
         tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
@@ -1398,15 +1439,23 @@ class _Planner:
                 f"press the cable in: {press:.1f} N of the {PRESS_MARGIN * clip.push_force:.1f} "
                 "N needed",
             )
-        to_near = float(np.linalg.norm(near - c))
-        self.ensure_free(cable, to_near + SPAN + GRASP_MARGIN, "for a parallel clip")
+        snap = math.asin(min(1.0, PRESS_MARGIN * clip.push_force / (2.0 * tension)))
+        least = self.near_arc(cable, seat, slot, 0.5 * SPAN, snap) + SPAN
+        self.ensure_free(cable, least, "for a parallel clip", lead=MIN_LEAD)
         if other not in self.robot.sensors and cable.arm not in self.robot.sensors:
             raise self.fail(cable, "C needs a force sensor on one of the grippers")
-        grasp = cable.at - SPAN
-        if grasp - cable.s_contact < GRASP_MARGIN:
+        half = self.parallel_half_span(cable, seat, slot, snap)
+        for point in (seat - half * slot, seat + half * slot):
+            self.check_reach(cable, point, "holding the cable over the clip for C")
+        bend = min(MAX_ANGLE, math.atan2(max(drop, 0.0), half))
+        if 2.0 * tension * math.sin(bend) < PRESS_MARGIN * clip.push_force:
             raise self.fail(
-                cable, "too little cable between the last fixed point and the gripper to grasp"
+                cable,
+                f"C would hold the cable {2.0 * half:.3f} m wide over the clip (the gripper "
+                f"holds {cable.free:.3f} m of it past its last fixed point), too wide to bend "
+                "it in",
             )
+        grasp = cable.at - 2.0 * half
         self.emit(
             cable, "grasp_tensioned", "grasp the cable with the other gripper", arm=other, at=grasp
         )
@@ -1419,8 +1468,8 @@ class _Planner:
         self.emit(
             cable, "release", "let go with the gripper on the near side of the clip", arm=other
         )
-        cable.gripper = far
-        cable.s_contact = grasp + 0.5 * SPAN + 0.5 * clip.length
+        cable.gripper = seat + half * slot
+        cable.s_contact = grasp + half + 0.5 * clip.length
         cable.contact = exit_point
         cable.last = clip.name
         self.emit(
@@ -1430,6 +1479,49 @@ class _Planner:
             arm=cable.arm,
             force=self.problem.tension,
         )
+
+    def near_arc(
+        self, cable: _Cable, seat: FloatArray, slot: FloatArray, half: float, snap: float
+    ) -> float:
+        """Cable [m] the near gripper of C grasps past the last fixed point (see below).
+
+        The straight distance from the fixed point to where that gripper
+        is when the cable snaps in (``half`` [m] before the seat along the
+        slot, bent down by ``snap`` [rad] from the jaws' top), plus
+        ``NEAR_SLACK``; at least ``GRASP_MARGIN``.
+        """
+        near = seat - half * slot
+        near[2] = float(seat[2]) + JAW_TOP - half * math.tan(snap)
+        straight = float(np.linalg.norm(near - cable.contact))
+        return max(straight + NEAR_SLACK, GRASP_MARGIN)
+
+    def parallel_half_span(
+        self, cable: _Cable, seat: FloatArray, slot: FloatArray, snap: float
+    ) -> float:
+        """Half the distance [m] between C's grippers that leaves the near span straight.
+
+        C centres the cable between the grippers over the seat, the
+        grippers ``2 h`` apart along the slot. With the gripper holding
+        ``free`` of cable past the last fixed point, the other grasps
+        ``free - 2 h`` past it, and the near span from the fixed point to
+        that gripper must then be about straight (:meth:`near_arc`): held
+        slack, the release leaves it lying loose, and the pull that
+        follows drags the slack through the clip (which holds the cable
+        across, not along; the 17 deg level anchor-clip scene: 82 mm of
+        slack, D pulled the gripper 42 mm out and found the route longer
+        than the model's rest length from the clip). ``free`` then fixes
+        h, at least ``SPAN / 2`` (:meth:`ensure_free` slides out enough).
+        """
+        lo, hi = 0.5 * SPAN, 0.5 * cable.free
+        if self.near_arc(cable, seat, slot, lo, snap) + 2.0 * lo >= cable.free:
+            return lo
+        for _ in range(60):  # near_arc changes by less than 1 per unit of h: monotonic
+            mid = 0.5 * (lo + hi)
+            if self.near_arc(cable, seat, slot, mid, snap) + 2.0 * mid > cable.free:
+                hi = mid
+            else:
+                lo = mid
+        return 0.5 * (lo + hi)
 
     # -- length: slide out and hand over
 
