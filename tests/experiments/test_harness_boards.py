@@ -6,7 +6,17 @@ import pytest
 
 pytest.importorskip("yaml")
 
-from tautwire.experiments.harness_boards import BOX_X, BOX_Y, ENTRIES, draw_board
+import numpy as np
+
+from tautwire.experiments.harness_boards import (
+    BOX_X,
+    BOX_Y,
+    ENTRIES,
+    SPACING,
+    SPAN_CLEARANCE,
+    draw_board,
+    random_board,
+)
 from tautwire.robot.workspace import WORKSPACE
 from tautwire.scenario.route_problem import plan_scenario
 
@@ -45,3 +55,31 @@ def test_boards_mix_pegs_windings_and_clips() -> None:
     assert any(e.wind for e in entries)
     assert {e.side for e in entries if e.side} == {"left", "right"}
     assert len({f.type for f in fixtures.values()}) == 3
+
+
+def _off(p: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    ab = b - a
+    t = float(np.clip((p - a) @ ab / float(ab @ ab), 0.0, 1.0))
+    return float(np.linalg.norm(p - a - t * ab))
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_no_fixture_stands_on_an_anchor_or_on_a_span_of_its_route(seed: int) -> None:
+    """Random board 360400295 had its F2 10 mm from its anchor, on the span A1 -> F1."""
+    board = random_board(np.random.default_rng(seed))
+    if board is None:
+        return
+    where = {
+        f["name"]: np.array(f["position"][:2], dtype=float) for f in board["board"]["fixtures"]
+    }
+    names = list(where)
+    for i, a in enumerate(names):
+        for b in names[i + 1 :]:
+            assert float(np.linalg.norm(where[a] - where[b])) >= SPACING - 1e-4, (a, b)
+    for cable in board["cables"]:
+        path = [cable["start"]] + [e["fixture"] for e in cable["route"]]
+        for k in range(1, len(path)):
+            a, b = where[path[k - 1]], where[path[k]]
+            for name in names:
+                if name not in (path[k - 1], path[k]):
+                    assert _off(where[name], a, b) >= SPAN_CLEARANCE - 1e-4, (name, a, b)

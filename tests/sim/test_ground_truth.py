@@ -156,3 +156,22 @@ def test_a_cable_is_clipped_only_when_it_sits_in_the_jaws(via: bool) -> None:
     assert truth.fixture_type("C") == "clip"
     with pytest.raises(InvalidArgumentError, match="not a clip"):
         truth.clipped("A", "W")
+
+
+@pytest.mark.parametrize(("height", "touches"), [(0.0, True), (0.008, True), (0.025, False)])
+def test_a_span_bears_on_a_clip_only_down_at_its_jaws(height: float, touches: bool) -> None:
+    """A cable held 25 mm over a clip (its tail draped into the jaws) does not bear on it.
+
+    Random board 1695658280: the slide ended with the gripper above F8, the
+    tail beyond the fingers hung into F8's jaws, and the span from the
+    gripper back to F6 counted as leaving F8, slack: a false success of D.
+    """
+    world = _clip_world(True)
+    truth = GroundTruth(world)
+    clip = world.spec.fixture("C")
+    seat = np.asarray(clip.position)
+    # a straight cable over the clip along its slot, held at its last vertex
+    xs = np.linspace(0.3, 0.0, 16)
+    pts = np.stack([xs, np.zeros_like(xs), np.full_like(xs, seat[2] + height)], axis=1)
+    hit = truth._first_touching(pts, 0, 1, 0.0025, [clip])
+    assert (hit is not None and hit[0] == "C") is touches

@@ -46,8 +46,12 @@ ENTRIES = (3, 5)
 #: The box the fixtures are drawn in [m] (x, |y|).
 BOX_X = (0.12, 0.70)
 BOX_Y = (0.06, 0.52)
-#: Least distance [m] between two fixtures.
+#: Least distance [m] between two fixtures (anchors included).
 SPACING = 0.07
+#: Least distance [m] between a fixture and a straight span of a route that
+#: does not end at it (random board 360400295 had drawn its F2 10 mm from
+#: its anchor A1, on the span A1 -> F1: F into F1 pressed the cable onto F2).
+SPAN_CLEARANCE = 0.03
 #: Most boards drawn for one seed before giving up.
 MAX_DRAWS = 300
 
@@ -70,6 +74,13 @@ class DrawnBoard:
     refusals: tuple[str, ...]
 
 
+def _off_span(point: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    """Horizontal distance [m] of ``point`` from the segment ``a`` -> ``b``."""
+    ab = (b - a)[:2]
+    t = float(np.clip(float((point - a)[:2] @ ab) / max(float(ab @ ab), 1e-12), 0.0, 1.0))
+    return float(np.linalg.norm((point - a)[:2] - t * ab))
+
+
 def _route(
     rng: np.random.Generator, side: float, taken: list[np.ndarray], prefix: str, names: list[str]
 ) -> tuple[np.ndarray, float, list[dict[str, Any]], list[dict[str, Any]]] | None:
@@ -80,12 +91,14 @@ def _route(
     ``PEG_TURN`` (I must turn the cable round it far enough to find it).
     """
     anchor = np.array([rng.uniform(0.05, 0.12), side * rng.uniform(0.10, 0.22), 0.08])
+    taken.append(anchor)
+    spans: list[tuple[np.ndarray, np.ndarray]] = []
     heading = side * float(rng.uniform(-0.3, 0.5))  # away from the robot's centre line
     n = int(rng.integers(ENTRIES[0], ENTRIES[1] + 1))
     kinds = ["peg" if rng.random() < PEG else "clip" for _ in range(n)]
     fixtures: list[dict[str, Any]] = []
     entries: list[dict[str, Any]] = []
-    here = anchor.copy()
+    here = anchor  # never changed in place: "is not here" below picks it out of taken
     turn = 0.0  # the turn at the fixture before the one being placed
     for k in range(n):
         for _ in range(30):
@@ -93,7 +106,11 @@ def _route(
             point = here + step * np.array([math.cos(heading), math.sin(heading), 0.0])
             x, y = float(point[0]), float(point[1])
             inside = BOX_X[0] <= x <= BOX_X[1] and BOX_Y[0] <= side * y <= BOX_Y[1]
-            clear = all(float(np.linalg.norm(point[:2] - p[:2])) >= SPACING for p in taken)
+            clear = (
+                all(float(np.linalg.norm(point[:2] - p[:2])) >= SPACING for p in taken)
+                and all(_off_span(point, a, b) >= SPAN_CLEARANCE for a, b in spans[:-1])
+                and all(_off_span(p, here, point) >= SPAN_CLEARANCE for p in taken if p is not here)
+            )
             if inside and clear:
                 break
             heading += float(rng.uniform(-0.5, 0.5))
@@ -107,6 +124,7 @@ def _route(
         name = f"{prefix}{len(names) + 1}"
         names.append(name)
         taken.append(point)
+        spans.append((here, point))
         if kinds[k] == "peg":
             base = [round(x, 4), round(y, 4), 0.05]
             fixtures.append(

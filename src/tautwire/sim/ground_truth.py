@@ -448,8 +448,14 @@ class GroundTruth:
                 along = r @ f.direction
                 across = np.sqrt(np.maximum(r[:, 0] ** 2 + r[:, 1] ** 2 - along**2, 0.0))
                 design = self._world.scene.clips[f.name]
-                hits = (np.abs(along) <= 0.5 * self._world.options.clip_length) & (
-                    across <= design.wall_gap + design.jaw_radius + NEAR
+                # on the jaws at the highest: a cable held over the clip, as
+                # after a slide that ends above it with the tail draped in
+                # its jaws (random board 1695658280), does not bear on it
+                top = design.jaw_height + design.jaw_radius + cable_radius + NEAR
+                hits = (
+                    (np.abs(along) <= 0.5 * self._world.options.clip_length)
+                    & (across <= design.wall_gap + design.jaw_radius + NEAR)
+                    & (r[:, 2] <= top)
                 )
             else:
                 continue
