@@ -220,13 +220,36 @@ def test_two_cables_each_with_its_arm() -> None:
 
 def test_clip_across_the_cable_is_pressed_in_with_both_grippers() -> None:
     # C5's slot runs across the line from A1: F cannot, so H + C + release
-    p = plan(cable("W1", [RouteEntry("C5")], holds=(("left", 0.45),)))
+    p = plan(cable("W1", [RouteEntry("C5")], holds=(("left", 0.30),)))
     steps = names(p)
     h = steps.index("grasp_tensioned")
     assert steps[h : h + 3] == ["grasp_tensioned", "parallel_clipping", "release"]
     assert p.steps[h].params["arm"] == "right"
     assert p.steps[h + 2].params["arm"] == "right"  # the near-side gripper lets go
     assert "single_arm_clipping" not in steps
+
+
+def test_a_gripper_holding_too_much_cable_for_c_hands_it_over_first() -> None:
+    # held 0.45 m along: C's grippers would stand more than 2 MAX_HALF_SPAN apart
+    p = plan(cable("W1", [RouteEntry("C5")], holds=(("left", 0.45),)))
+    steps = names(p)
+    c = steps.index("parallel_clipping")
+    assert (
+        steps[:c]
+        == [
+            "single_arm_tension",
+            "grasp_tensioned",  # the hand-over: the right gripper grasps nearer
+            "release",
+            "single_arm_tension",
+            "grasp_tensioned",  # C's near gripper: the left one, free again
+            "parallel_clipping",
+        ][:c]
+    )
+    arms = [p.steps[i].params["arm"] for i in (1, 2, 4)]
+    assert arms == ["right", "left", "left"]
+    handed, near = (float(p.steps[i].params["at"]) for i in (1, 4))  # type: ignore[arg-type]
+    assert handed - near == pytest.approx(SPAN)
+    assert p.steps[c + 1].primitive == "release" and p.steps[c + 1].params["arm"] == "left"
 
 
 def test_a_gripper_holding_far_out_hands_the_cable_over() -> None:
@@ -529,11 +552,15 @@ def test_c_grasps_so_that_the_near_span_lies_straight_when_released(held: float)
     """
     w1 = cable("W1", [RouteEntry("C5")], holds=(("left", held),))
     p = plan(w1)
-    h = next(s for s in p.steps if s.primitive == "grasp_tensioned")
-    grasp = h.params["at"]
-    assert isinstance(grasp, float)
-    slides = [s.params["distance"] for s in p.steps if s.primitive == "single_arm_sliding"]
-    at = held + sum(float(d) for d in slides if isinstance(d, float))
+    steps = names(p)
+    c = steps.index("parallel_clipping")
+    grasps = [float(s.params["at"]) for s in p.steps[:c] if s.primitive == "grasp_tensioned"]  # type: ignore[arg-type]
+    grasp = grasps[-1]  # C's near gripper
+    if len(grasps) == 2:  # handed over first: the new gripper holds there
+        at = grasps[0]
+    else:
+        slides = [s.params["distance"] for s in p.steps if s.primitive == "single_arm_sliding"]
+        at = held + sum(float(d) for d in slides if isinstance(d, float))
     half = 0.5 * (at - grasp)  # the grippers end 2 half apart, centred on the seat
     assert half >= 0.5 * SPAN - 1e-9
     seat = np.array(BOARD[7].position)

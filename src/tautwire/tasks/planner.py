@@ -135,6 +135,10 @@ GRASP_MARGIN = 0.04
 #: Cable [m] beyond its straight length that C's near span keeps when the
 #: cable snaps in (see ``_Planner.parallel_half_span``).
 NEAR_SLACK = 0.003
+#: Half the widest distance [m] between C's grippers: a gripper holding more
+#: cable hands it over nearer first (random board 1808415002: 139 mm, the
+#: near gripper grasped 40 mm from the anchor, and C pulled 28 N).
+MAX_HALF_SPAN = 0.10
 #: Least turn [rad] of I round a peg that the route goes on from (it finds the peg).
 MIN_WIND = math.radians(20.0)
 #: Turn [rad] of I round the route's last peg past the catch: with nothing
@@ -1445,6 +1449,17 @@ class _Planner:
         if other not in self.robot.sensors and cable.arm not in self.robot.sensors:
             raise self.fail(cable, "C needs a force sensor on one of the grippers")
         half = self.parallel_half_span(cable, seat, slot, snap)
+        if half > MAX_HALF_SPAN:
+            # held so far out that the grippers would stand too wide (the
+            # near one by the fixed point): hand the cable over nearer first
+            self.hand_over(cable, cable.s_contact + least, "to hold it over the clip for C")
+            freed = self.other_arm_free(cable)
+            if freed is None:
+                raise self.fail(
+                    cable, f"C needs the other gripper, but {self.why_other_busy(cable)}"
+                )
+            other = freed
+            half = self.parallel_half_span(cable, seat, slot, snap)
         for point in (seat - half * slot, seat + half * slot):
             self.check_reach(cable, point, "holding the cable over the clip for C")
         bend = min(MAX_ANGLE, math.atan2(max(drop, 0.0), half))
