@@ -28,6 +28,33 @@ def test_sliding_moves_the_hold_and_keeps_ea() -> None:
         move_hold(g, 1, 0.2)
 
 
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+def test_sliding_past_a_released_point_merges_it(sense: float) -> None:
+    """A hand-over leaves a free point where the first gripper let go: it holds nothing back."""
+    xs = [0.0, 0.3, 0.35, 0.8] if sense > 0 else [0.0, 0.45, 0.5, 0.8]
+    kinds = (
+        ["free", "gripper", "free", "free"] if sense > 0 else ["free", "free", "gripper", "fixed"]
+    )
+    g = PathGraph.from_positions(
+        [[x, 0.0, 0.0] for x in xs],
+        mass_per_length=0.03,
+        kinds=kinds,  # type: ignore[arg-type]
+    )
+    g.points[0].kind = "fixed" if sense > 0 else "free"
+    for e in g.edges:
+        e.stiffness = 50.0 / e.length  # EA = 50 N
+    held = 1 if sense > 0 else 2
+    move_hold(g, held, sense * 0.1)
+    assert len(g.points) == 3 and g.total_length == pytest.approx(0.8)
+    gripper = g.index_of("gripper")
+    assert gripper is not None
+    assert g.arc_lengths()[gripper] == pytest.approx(0.4)
+    assert [e.stiffness * e.length for e in g.edges] == pytest.approx([50.0, 50.0])
+    # nor is the cable's end
+    with pytest.raises(InvalidArgumentError, match="beyond the gripper"):
+        move_hold(g, gripper, sense * 0.5)
+
+
 def test_added_points_and_dropped_estimates() -> None:
     g = _graph()
     known = [id(p) for p in g.points]

@@ -23,7 +23,8 @@ def move_hold(graph: PathGraph, index: int, delta: float) -> None:
 
     The cable slid through the gripper: with ``delta`` > 0 the gripper now
     holds it further along (the edge before the point grows, the edge after
-    it shrinks); < 0 the other way. Each edge keeps EA = k d.
+    it shrinks); < 0 the other way. Each edge keeps EA = k d. Free inner
+    points the slide passes are merged into the shrinking edge.
 
     Raises:
         InvalidArgumentError: if the shrinking edge is missing or too short.
@@ -32,6 +33,18 @@ def move_hold(graph: PathGraph, index: int, delta: float) -> None:
     d = abs(delta)
     if not (0 <= grow < len(graph.edges) and 0 <= shrink < len(graph.edges)):
         raise InvalidArgumentError("the cable can only slide through a gripper it passes through")
+    # a free inner point beyond (where a gripper let go: a hand-over's
+    # release) holds nothing back; cable sliding past it merges it into the
+    # edge (random board 1808415002: E after a hand-over)
+    far = shrink + 1 if delta > 0.0 else shrink
+    while (
+        graph.edges[shrink].length <= d
+        and 0 < far < len(graph.points) - 1
+        and not graph.points[far].is_constrained
+    ):
+        graph.remove_point(far)
+        if delta < 0.0:  # the points before the gripper shifted down by one
+            index, grow, shrink, far = index - 1, grow - 1, shrink - 1, far - 1
     if graph.edges[shrink].length <= d:
         raise InvalidArgumentError(
             f"only {graph.edges[shrink].length:.3f} m of cable is left beyond the gripper,"
