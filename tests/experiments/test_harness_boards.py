@@ -14,6 +14,7 @@ from tautwire.experiments.harness_boards import (
     ENTRIES,
     SPACING,
     SPAN_CLEARANCE,
+    START_CLEARANCE,
     draw_board,
     random_board,
 )
@@ -83,3 +84,12 @@ def test_no_fixture_stands_on_an_anchor_or_on_a_span_of_its_route(seed: int) -> 
             for name in names:
                 if name not in (path[k - 1], path[k]):
                     assert _off(where[name], a, b) >= SPAN_CLEARANCE - 1e-4, (name, a, b)
+
+    # the cable as it lies at the start, from its anchor towards its gripper
+    arms = {"W1": "left", "W2": "right"}
+    for cable in board["cables"]:
+        a = where[cable["start"]]
+        g = np.array(board["robot"]["grippers"][arms[cable["name"]]]["position"][:2], dtype=float)
+        for f in board["board"]["fixtures"]:
+            if f["type"] != "anchor":
+                assert _off(where[f["name"]], a, g) >= START_CLEARANCE - 1e-4, f["name"]

@@ -52,6 +52,11 @@ SPACING = 0.07
 #: does not end at it (random board 360400295 had drawn its F2 10 mm from
 #: its anchor A1, on the span A1 -> F1: F into F1 pressed the cable onto F2).
 SPAN_CLEARANCE = 0.03
+#: Least distance [m] between a fixture and the cable as it lies at the
+#: start (straight from its anchor towards the gripper, sagging): a cable
+#: laid across a clip slid under its base (random board 360400295's F1, 3 deg
+#: off the route, then could not be pressed in).
+START_CLEARANCE = 0.025
 #: Most boards drawn for one seed before giving up.
 MAX_DRAWS = 300
 
@@ -201,11 +206,23 @@ def random_board(rng: np.random.Generator, name: str = "harness-board") -> dict[
         first = np.array(own[0]["position"], dtype=float)
         towards = (first - anchor)[:2]
         towards /= max(float(np.linalg.norm(towards)), 1e-9)
-        # the gripper starts short of taut, turned a little off the first fixture
-        off = float(rng.uniform(-0.25, 0.25))
-        c, s = math.cos(off), math.sin(off)
-        d = np.array([c * towards[0] - s * towards[1], s * towards[0] + c * towards[1]])
-        start = anchor[:2] + 0.85 * held * d
+        # the gripper starts short of taut, turned a little off the first
+        # fixture, the cable clear of every fixture
+        for _ in range(20):
+            off = float(rng.uniform(-0.25, 0.25))
+            c, s = math.cos(off), math.sin(off)
+            d = np.array([c * towards[0] - s * towards[1], s * towards[0] + c * towards[1]])
+            start = anchor[:2] + 0.85 * held * d
+            ends = (np.append(anchor[:2], 0.0), np.append(start, 0.0))
+            if all(
+                _off_span(np.append(np.asarray(f["position"][:2], dtype=float), 0.0), *ends)
+                >= START_CLEARANCE
+                for f in fixtures
+                if f["type"] != "anchor"
+            ):
+                break
+        else:
+            return None
         grippers[arm] = {"position": [round(float(start[0]), 4), round(float(start[1]), 4), 0.12]}
     return {
         "version": 1,
