@@ -1,5 +1,6 @@
 import math
 
+import numpy as np
 import pytest
 from hypothesis import given
 from hypothesis import strategies as st
@@ -77,3 +78,42 @@ def test_a_cable_that_obeys_hooke_never_trips_it_below_the_force_limit(
     bound = TravelBound(15.0)
     for t in tensions:
         assert not bound.update(rest + t / k, rest, t, k_estimate)
+
+
+def test_the_route_runs_on_through_a_clip_with_slack_behind_it() -> None:
+    """A clip holds the cable across, not along: a pull draws the slack behind it through."""
+    from tautwire.model import PathGraph
+    from tautwire.primitives import make_context
+    from tautwire.primitives.model_edits import move_hold
+    from tautwire.primitives.model_estimator import TensionState
+    from tautwire.primitives.travel_bound import route_to_fixed_point
+
+    anchor, released = np.array([0.0, 0.0, 0.1]), np.array([0.06, 0.0, 0.07])
+    clip, gripper = np.array([0.1, 0.0, 0.1]), np.array([0.2, 0.0, 0.1])
+    graph = PathGraph.from_positions(
+        [anchor, released, clip, gripper],
+        mass_per_length=0.03,
+        kinds=["fixed", "free", "fixed", "gripper"],
+        labels=["A1", "released", "F5", "left"],
+    )
+    ctx = make_context(graph, "left", k_initial=500.0)
+    est = ctx.estimator
+    assert est.contact_index == 2
+    state = TensionState(3.0, -np.array([1.0, 0, 0]), np.zeros(3), np.zeros(3), clip, 0.1, True)
+    s = graph.arc_lengths()
+    slack = float(s[2]) - 0.1  # the span behind F5: 0.117 m of cable over 0.1 m
+    # without the clip's name, the route ends at it, as for an anchor
+    plain = route_to_fixed_point(est, state)
+    assert plain is not None and plain.through == ()
+    assert plain.rest_length == pytest.approx(0.1) and plain.length == pytest.approx(0.1)
+    route = route_to_fixed_point(est, state, {"F5"})
+    assert route is not None and route.through == ((2, pytest.approx(slack)),)
+    assert route.length == pytest.approx(0.2)
+    assert route.rest_length == pytest.approx(float(s[3]))
+    # drawn through: F5 moves back along the cable by the slack, the span behind it straight
+    move_hold(graph, 2, -slack)
+    f5 = graph.index_of("fixed", "F5")
+    assert f5 == 2  # the released point stays: the slack came out of its edge
+    behind = graph.arc_lengths()[f5]
+    assert behind == pytest.approx(0.1)
+    assert route_to_fixed_point(est, state, {"F5"}).through == ()  # type: ignore[union-attr]

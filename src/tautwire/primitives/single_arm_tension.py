@@ -11,6 +11,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.model_edits import move_hold
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
@@ -96,7 +97,12 @@ class SingleArmTension(Primitive):
     (:class:`~tautwire.primitives.travel_bound.TravelBound`). Further, an
     intact cable would have reached the force limit: it has slipped
     through the fingers, and D fails at once rather than drive the gripper
-    out of the workspace.
+    out of the workspace. A clip holds the cable across, not along: where
+    the model's span behind a clip on the route is slack (the near span a
+    parallel clip's release leaves), the route runs on through the clip to
+    the next constrained point, and on success the model edit moves the
+    clip's point along the cable by that slack (the span behind it now lies
+    straight; :func:`~tautwire.primitives.travel_bound.route_to_fixed_point`).
 
     Success: the tension, averaged over ``JUDGE_TIME`` (0.1 s: the sensor's
     noise is not the tension leaving the band), stays within ``tolerance`` of
@@ -212,6 +218,7 @@ class SingleArmTension(Primitive):
         ctx.estimator.rotation = None
         self._desired = current_pose(obs)
         self._start_position = obs.gripper(self.arm).position.copy()
+        self._through: tuple[tuple[int, float], ...] = ()  # clips the pull draws slack through
         self._judge_tension = TensionJudge(self.force, self.tolerance, self.hold_time, JUDGE_TIME)
         self._travel = TravelBound(ctx.limits.max_force)
         self._slack = SlackWatch(SLACK_TIME, SLACK_FRACTION)
@@ -323,7 +330,9 @@ class SingleArmTension(Primitive):
         if self.duration is not None:
             if self.elapsed >= self.duration:
                 self.outcome = (
-                    Outcome.success(f"tension {tension:.2f} N{self._k_note(ctx)}")
+                    Outcome.success(
+                        f"tension {tension:.2f} N{self._k_note(ctx)}" + self._draw_through(ctx)
+                    )
                     if held and holding
                     else Outcome.failure(
                         "timeout", f"tension {tension:.2f} N, set {self.force:g} N ({self._phase})"
@@ -333,6 +342,7 @@ class SingleArmTension(Primitive):
         if held and holding:
             self.outcome = Outcome.success(
                 f"tension {tension:.2f} N held {self.hold_time:g} s{self._k_note(ctx)}"
+                + self._draw_through(ctx)
             )
             return
         if self._phase != "approach" and self._slack.update(obs.time, state.tension, self.force):
@@ -349,7 +359,8 @@ class SingleArmTension(Primitive):
                 "no_contact", f"pulled {travel:.2f} m and the cable never became taut"
             )
             return
-        route = route_to_fixed_point(ctx.estimator, state)
+        route = route_to_fixed_point(ctx.estimator, state, ctx.clips.keys())
+        self._through = route.through if route is not None else ()
         if route is None:
             return
         length, rest = route.length, route.rest_length
@@ -363,6 +374,31 @@ class SingleArmTension(Primitive):
                 f" ({self._travel.allowed:.3f} m at k {self._travel.stiffness(k_route):.3g} N/m):"
                 " the cable is no longer held where the model says",
             )
+
+    def _draw_through(self, ctx: PrimitiveContext) -> str:
+        """The model edit once taut: the slack the pull drew through clips is past them.
+
+        Each clip on the route with slack behind it moves along the cable
+        towards the fixed point by that slack (:func:`move_hold`): the span
+        behind it now lies straight, the one before the gripper is longer.
+        """
+        through = self._through
+        if not through:
+            return ""
+        g = ctx.estimator.gripper_index
+        moved = []
+        points = ctx.graph.points
+        for index, slack in sorted(through, reverse=True):
+            sense = 1 if g is not None and index > g else -1  # towards the fixed point
+            # the span behind lies straight now: its free points (where a
+            # gripper let go) mark nothing
+            while 0 < index + sense < len(points) - 1 and not points[index + sense].is_constrained:
+                ctx.graph.remove_point(index + sense)
+                index -= 1 if sense < 0 else 0
+            move_hold(ctx.graph, index, sense * slack)
+            moved.append(f"{1e3 * slack:.0f} mm through {points[index].label}")
+        self._through = ()
+        return "; drew " + ", ".join(moved)
 
     def _k_note(self, ctx: PrimitiveContext) -> str:
         e = ctx.estimator.elasticity

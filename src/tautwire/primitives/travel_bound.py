@@ -29,6 +29,7 @@ gripper holds the cable, and the sag the chord still has.
 from __future__ import annotations
 
 import math
+from collections.abc import Collection
 from typing import NamedTuple
 
 from tautwire.errors import InvalidArgumentError
@@ -110,18 +111,28 @@ class Route(NamedTuple):
             the fixed point).
         rest_length: Its rest length l_0 [m] in the path graph.
         edge_rest_length: The rest length [m] of the gripper's own edge.
+        through: The clips (graph index, slack [m] before it) the pull
+            draws slack through on its way to the fixed point.
     """
 
     length: float
     rest_length: float
     edge_rest_length: float
+    through: tuple[tuple[int, float], ...] = ()
 
     def stiffness(self, k_edge: float) -> float:
         """The route's stiffness [N/m] from the edge's: the same EA over l_0."""
         return k_edge * self.edge_rest_length / max(self.rest_length, 1e-9)
 
 
-def route_to_fixed_point(estimator: ModelEstimator, state: TensionState) -> Route | None:
+#: Slack [m] in the model's span behind a clip, beyond its straight length,
+#: from which a pull counts as drawing cable through the clip.
+SLACK_THROUGH = 0.004
+
+
+def route_to_fixed_point(
+    estimator: ModelEstimator, state: TensionState, clips: Collection[str] = ()
+) -> Route | None:
     """The route from the sensing gripper to the nearest point that holds the cable fixed.
 
     It runs from the gripper through the contact estimate and the model's
@@ -129,6 +140,13 @@ def route_to_fixed_point(estimator: ModelEstimator, state: TensionState) -> Rout
     there is none (a free end). ``state`` (the latest update's) gives the
     gripper's span when the contact is the one it was measured against; a
     contact the update has just changed is measured afresh.
+
+    A clip (a fixed point labelled with a name in ``clips``) holds the cable
+    across its slot, not along it: where the model's span behind it holds
+    more than ``SLACK_THROUGH`` of slack beyond its straight length, the pull
+    draws that slack through the clip, and the route runs on, straight, to
+    the next constrained point (the near span a parallel clip's release
+    leaves loose: random board 1808415002's F5).
     """
     graph = estimator.graph
     g = estimator.gripper_index
@@ -149,4 +167,18 @@ def route_to_fixed_point(estimator: ModelEstimator, state: TensionState) -> Rout
             return None
         length += norm3(points[j].position - points[i].position)
         i = j
-    return Route(length, abs(float(s[g] - s[i])), abs(float(s[g] - s[c])))
+    through: list[tuple[int, float]] = []
+    while points[i].kind == "fixed" and points[i].label in clips:
+        j = i + step
+        while 0 <= j < len(points) and not points[j].is_constrained:
+            j += step
+        if not 0 <= j < len(points):
+            break
+        straight = norm3(points[j].position - points[i].position)
+        slack = abs(float(s[i] - s[j])) - straight
+        if slack <= SLACK_THROUGH:
+            break
+        through.append((i, slack))
+        length += straight
+        i = j
+    return Route(length, abs(float(s[g] - s[i])), abs(float(s[g] - s[c])), tuple(through))

@@ -134,7 +134,7 @@ SPAN = 0.12
 GRASP_MARGIN = 0.04
 #: Cable [m] beyond its straight length that C's near span keeps when the
 #: cable snaps in (see ``_Planner.parallel_half_span``).
-NEAR_SLACK = 0.003
+NEAR_SLACK = 0.010
 #: Half the widest distance [m] between C's grippers: a gripper holding more
 #: cable hands it over nearer first (random board 1808415002: 139 mm, the
 #: near gripper grasped 40 mm from the anchor, and C pulled 28 N).
