@@ -175,3 +175,27 @@ def test_a_span_bears_on_a_clip_only_down_at_its_jaws(height: float, touches: bo
     pts = np.stack([xs, np.zeros_like(xs), np.full_like(xs, seat[2] + height)], axis=1)
     hit = truth._first_touching(pts, 0, 1, 0.0025, [clip])
     assert (hit is not None and hit[0] == "C") is touches
+
+
+def test_a_short_span_past_a_clip_keeps_a_segment_to_read_its_tension() -> None:
+    """A gripper 45 mm past a clip's exit (as after C): the span is two segments.
+
+    One runs through the fingers, the other leaves the clip; dropping that
+    one as partly wrapped too left none, and the taut span read 0 N, slack.
+    """
+    world = anchor_and_gripper(
+        [0.0, 0.0, 0.3],
+        [0.3, 0.0, 0.3],
+        0.29,
+        200.0,
+        fixtures=(ClipSpec("C", [0.24, 0.0, 0.3], 0.0, 2.0),),
+        via=("C",),
+    )
+    rest(world, 0.5)
+    truth = GroundTruth(world)
+    span = truth.span("W", "left")
+    assert span is not None and span.fixture == "C"
+    lo, hi = span.segments
+    assert hi > lo
+    assert span.taut and span.tension > 0.5
+    assert span.tension == pytest.approx(float(np.linalg.norm(world.wrench("left")[0])), rel=0.1)

@@ -360,10 +360,18 @@ class GroundTruth:
             segments = (max(lo, both[0]), min(hi, both[1]))
             if segments[1] <= segments[0]:
                 segments = both
-        if i != h and fixture is not None and i != (0 if step < 0 else len(pts) - 1):
-            # the segment at the fixture may be partly wrapped: not in the free span
-            lo, hi = segments
-            segments = (min(lo + 1, hi), hi) if i < h else (lo, max(hi - 1, lo))
+        lo, hi = segments
+        if (
+            i != h
+            and fixture is not None
+            and i != (0 if step < 0 else len(pts) - 1)
+            and hi - lo > 1
+        ):
+            # the segment at the fixture may be partly wrapped: not in the
+            # free span, unless it is all there is of it (a gripper 45 mm
+            # past a clip's exit after C: two segments, one in the fingers;
+            # dropping the other too read the taut span as 0 N, slack)
+            segments = (lo + 1, hi) if i < h else (lo, hi - 1)
         tension = self._segment_tensions(cable, segments)
         contact = None
         if fixture is not None:
