@@ -599,3 +599,30 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
     board = tuple(f for f in (*BOARD, c6) if f.name != "C2")
     p = plan_routes(RouteProblem(board, (w1, busy), ROBOT))
     assert not any(s.why.startswith("lift the cable clear") for s in p.steps)
+
+
+def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first() -> None:
+    """The fingers must clear the clip the slide brings cable towards, not only the others.
+
+    Random board 1808415002: E after F2 slid the gripper along F2's slot over
+    F3, 126 mm straight on, and pulled 25 N.
+    """
+    busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    w1 = cable("W1", [RouteEntry("C1"), RouteEntry("C2")], length=0.9)
+    p = plan_routes(RouteProblem(BOARD, (w1, busy), ROBOT))
+    steps = list(p.steps)
+    f1 = next(i for i, s in enumerate(steps) if s.params.get("clip") == "C1")
+    lift, slide = steps[f1 + 1], steps[f1 + 2]
+    assert lift.primitive == "move" and lift.why.startswith("lift the cable clear")
+    assert slide.primitive == "single_arm_sliding"
+    start = np.asarray(lift.params["to"], dtype=float)
+    exit_point = np.array([0.365, 0.10, 0.08])
+    way = (start - exit_point) / float(np.linalg.norm(start - exit_point))
+    # over C2 (x = 0.50) the tool centre point is a finger's reach above its jaws
+    over = start + way * (0.50 - float(start[0])) / float(way[0])
+    assert float(over[2]) >= 0.08 + 0.008 + 0.008
+    # with that clip 45 mm aside of the slide's line, no lift
+    aside = BoardFixture("C2", "clip", (0.50, 0.145, 0.08), yaw=0.32, push_force=2.5, length=0.03)
+    board = (*(f for f in BOARD if f.name != "C2"), aside)
+    p = plan_routes(RouteProblem(board, (w1, busy), ROBOT))
+    assert not any(s.why.startswith("lift the cable clear") for s in p.steps)

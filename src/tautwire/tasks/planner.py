@@ -128,6 +128,11 @@ CLIP_RISE = MAX_FAR_RISE
 #: Step [rad] of the rise a gripper is lifted by, about the last fixed point,
 #: before a slide that would otherwise run into a fixture.
 LIFT_STEP = math.radians(2.0)
+#: Largest turn [rad] aside about the vertical, and its step, of the pose a
+#: slide starts from where a fixture stands straight on along it (see
+#: ``_Planner.slide_lift``).
+SIDE_TURN = math.radians(30.0)
+SIDE_STEP = math.radians(10.0)
 #: Cable length [m] between the two grippers of a parallel clip (H + C).
 SPAN = 0.12
 #: H grasps at least this far [m] from either end of the taut edge.
@@ -1103,13 +1108,17 @@ class _Planner:
         waypoints: list[FloatArray],
         what: str,
         target: str | None = None,
+        fingers: bool = False,
     ) -> None:
         """Fail unless the taut cable from ``pivot`` clears the board on the gripper's way.
 
-        The fixture the cable leaves and ``target`` (the one it is aimed at) are not checked.
+        The fixture the cable leaves and ``target`` (the one it is aimed at)
+        are not checked; with ``fingers``, the gripper and the tail beyond
+        it are checked against ``target`` too.
         """
         skip = frozenset(n for n in (cable.last, target) if n is not None)
-        hit = self.path_collision(cable, pivot, start, waypoints, skip)
+        held = frozenset(n for n in (cable.last,) if n is not None) if fingers else None
+        hit = self.path_collision(cable, pivot, start, waypoints, skip, held)
         if hit is not None:
             raise self.fail(
                 cable,
@@ -1125,19 +1134,23 @@ class _Planner:
         start: FloatArray,
         waypoints: list[FloatArray],
         skip: frozenset[str],
+        gripper_skip: frozenset[str] | None = None,
     ) -> Collision | None:
         """The first fixture the taut cable from ``pivot`` (or its gripper) runs into.
 
-        The gripper moves from ``start`` through ``waypoints``, straight between them.
+        The gripper moves from ``start`` through ``waypoints``, straight
+        between them. ``gripper_skip`` (default ``skip``): the fixtures the
+        gripper and the tail beyond it are not checked against.
         """
         skip = self.overlapping(skip)
+        held_skip = skip if gripper_skip is None else self.overlapping(gripper_skip)
         previous = start
         for point in waypoints:
             for k in range(1, 9):
                 g = previous + (point - previous) * (k / 8.0)
                 hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is None:
-                    hit = self.held_hit(cable, g, pivot, skip)
+                    hit = self.held_hit(cable, g, pivot, held_skip)
                 if hit is not None:
                     return hit
             previous = point
@@ -1565,8 +1578,12 @@ class _Planner:
         start = cable.gripper if cable.pressed is None else cable.pressed
         low = start + _unit(start - cable.contact) * distance
         skip = frozenset(n for n in (cable.last, cable.fixture) if n is not None)
-        if self.path_collision(cable, cable.contact, start, [low], skip) is not None:
-            lifted = self.slide_lift(cable, start, distance, skip)
+        # the fingers must clear the fixture the slide brings cable towards
+        # too: random board 1808415002's E after F2 slid the gripper 141 mm
+        # along F2's slot, over F3 126 mm on, and pulled 25 N
+        fingers = frozenset(n for n in (cable.last,) if n is not None)
+        if self.path_collision(cable, cable.contact, start, [low], skip, fingers) is not None:
+            lifted = self.slide_lift(cable, start, distance, skip, fingers)
             if lifted is not None:
                 self.emit_move(
                     cable, lifted, "lift the cable clear of the board before sliding it out"
@@ -1575,7 +1592,7 @@ class _Planner:
                 low = out = start + _unit(start - cable.contact) * distance
                 self.check_reach(cable, out, "sliding the cable out")
         self.require_clear(
-            cable, cable.contact, start, [low], "sliding the cable out", cable.fixture
+            cable, cable.contact, start, [low], "sliding the cable out", cable.fixture, True
         )
         self.emit(
             cable,
@@ -1596,7 +1613,12 @@ class _Planner:
         cable.gripper = out
 
     def slide_lift(
-        self, cable: _Cable, start: FloatArray, distance: float, skip: frozenset[str]
+        self,
+        cable: _Cable,
+        start: FloatArray,
+        distance: float,
+        skip: frozenset[str],
+        gripper_skip: frozenset[str] | None = None,
     ) -> FloatArray | None:
         """A gripper point [m] about the last fixed point from which a slide clears the board.
 
@@ -1604,27 +1626,41 @@ class _Planner:
         ``LIFT_STEP``, up to ``CLIP_RISE`` above the horizontal when the
         cable leaves a clip (steeper draws it up out of the jaws), else up
         to ``MAX_ANGLE``; the lowest rise whose lift and slide both clear
-        every fixture and stay within reach. None if none does.
+        every fixture and stay within reach. Where none does, the same
+        rises turned aside about the vertical by ``SIDE_STEP`` steps up to
+        ``SIDE_TURN`` (the smallest turn first): a fixture straight on along
+        the slide, the next clip of the route, is passed beside. None if
+        none does.
         """
         c = cable.contact
         radius = float(np.linalg.norm(start - c))
         horizontal = _unit(_flat(start - c))
         last = self.fixtures.get(cable.last) if cable.last else None
         limit = CLIP_RISE if last is not None and last.kind == "clip" else MAX_ANGLE
-        rise = math.atan2(float(start[2] - c[2]), float(np.linalg.norm(_flat(start - c))))
-        rise = max(rise, 0.0)
-        while rise < limit:
-            rise = min(rise + LIFT_STEP, limit)
-            lifted = c + radius * (
-                math.cos(rise) * horizontal + math.sin(rise) * np.array([0.0, 0.0, 1.0])
-            )
-            out = lifted + _unit(lifted - c) * distance
-            if (
-                self.robot.reach.contains([float(v) for v in lifted])
-                and self.robot.reach.contains([float(v) for v in out])
-                and self.path_collision(cable, c, start, [lifted, out], skip) is None
-            ):
-                return lifted
+        rise0 = math.atan2(float(start[2] - c[2]), float(np.linalg.norm(_flat(start - c))))
+        rise0 = max(rise0, 0.0)
+        turns = [0.0]
+        for k in range(1, round(SIDE_TURN / SIDE_STEP) + 1):
+            turns += [k * SIDE_STEP, -k * SIDE_STEP]
+        for turn in turns:
+            aside = _turn(horizontal, turn)
+            rises = [] if turn == 0.0 else [rise0]  # straight on, unlifted: the slide that hit
+            rise = rise0
+            while rise < limit:
+                rise = min(rise + LIFT_STEP, limit)
+                rises.append(rise)
+            for rise in rises:
+                lifted = c + radius * (
+                    math.cos(rise) * aside + math.sin(rise) * np.array([0.0, 0.0, 1.0])
+                )
+                out = lifted + _unit(lifted - c) * distance
+                if (
+                    self.robot.reach.contains([float(v) for v in lifted])
+                    and self.robot.reach.contains([float(v) for v in out])
+                    and self.path_collision(cable, c, start, [lifted, out], skip, gripper_skip)
+                    is None
+                ):
+                    return lifted
         return None
 
     def hand_over(self, cable: _Cable, at: float, what: str) -> None:
