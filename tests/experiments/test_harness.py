@@ -15,6 +15,7 @@ from tautwire.experiments.harness import (
     BOARDS_CSV,
     BOARDS_JSON,
     BOARDS_MD,
+    _route_disagreement,
     summarise_boards,
     worst_board,
 )
@@ -105,3 +106,14 @@ def test_harness_options_are_checked(capsys: pytest.CaptureFixture[str]) -> None
     assert "only with --boards" in capsys.readouterr().err
     assert main(["reproduce", "table1", "--steps", "2"]) != 0
     assert "only for harness --boards" in capsys.readouterr().err
+
+
+def test_a_run_whose_steps_all_agreed_says_which_route_the_simulator_denies() -> None:
+    done = {"name": "W1", "route_done": True, "route_truth": {"agrees": True, "detail": "ok"}}
+    denied = {
+        "name": "W2",
+        "route_done": True,
+        "route_truth": {"agrees": False, "detail": "F6 does not hold the cable"},
+    }
+    assert _route_disagreement({"cables": [done]}) is None
+    assert _route_disagreement({"cables": [done, denied]}) == "W2: F6 does not hold the cable"

@@ -302,7 +302,7 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
         else f"{r['steps'].index(failed) + 1} {failed['primitive']} ({failed.get('cable')})",
         "cause": (failed.get("cause") if failed is not None else None)
         or (None if r["success"] else "false_success"),
-        "detail": None if failed is None else failed.get("detail"),
+        "detail": failed.get("detail") if failed is not None else _route_disagreement(r),
         "routes_done": sum(1 for c in r.get("cables", []) if c.get("route_done")),
         "model_horizontal_mean": me.get("horizontal_mean"),
         "model_horizontal_max": me.get("horizontal_max"),
@@ -637,3 +637,13 @@ def reproduce_harness_boards(
     (out / BOARDS_MD).write_text(boards_markdown(report, records))
     write_boards_csv(out / BOARDS_CSV, records)
     return report
+
+
+def _route_disagreement(result: dict[str, Any]) -> str | None:
+    """Why a run whose every step agreed is no success: a route done in the model, not truly."""
+    wrong = [
+        f"{c.get('name')}: {(c.get('route_truth') or {}).get('detail', '')}"
+        for c in result.get("cables", [])
+        if c.get("route_done") and not (c.get("route_truth") or {}).get("agrees", True)
+    ]
+    return "; ".join(wrong) or None
