@@ -16,7 +16,7 @@ def test_valid_scenario_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> 
     out, err = capsys.readouterr()
     assert status == 0 and err == ""
     assert "scenario 'harness'" in out and "valid" in out
-    assert "fixtures: 10" in out and "cables: 2" in out and "task steps: 46" in out
+    assert "fixtures: 10" in out and "cables: 2" in out and "task steps: 48" in out
     assert "W1: 0.8 m, 200 N/m, route A1, held by left at 0.3 m" in out
     assert "target route: C1 -> P1 (left) -> C2 -> C3" in out
     assert "target route: P2 (right, wind 1) -> C4 -> C5 -> P3 (right)" in out
