@@ -17,6 +17,7 @@ from tautwire.cli.main import main
 from tautwire.robot.workspace import WORKSPACE
 from tautwire.scenario import parse_scenario
 from tautwire.scenario.route_problem import plan_scenario, route_problem, task_yaml
+from tautwire.tasks import planner
 from tautwire.tasks.planner import (
     SPAN,
     BoardFixture,
@@ -534,10 +535,14 @@ def test_a_clip_beyond_f_angle_is_pressed_in_with_both_grippers_when_the_other_i
 def test_a_clip_beyond_f_angle_is_pressed_in_with_one_arm_when_the_other_is_busy() -> None:
     w1 = cable("W1", [RouteEntry("ANG")], holds=(("left", 0.45),))
     w2 = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
-    board = (BOARD[0], BOARD[1], _angled_clip(14.0))
+    board = (BOARD[0], BOARD[1], _angled_clip(12.0))
     p = plan_routes(RouteProblem(board, (w1, w2), ROBOT))
     assert names(p).count("single_arm_clipping") == 1
     assert "parallel_clipping" not in names(p)
+    # beyond what one arm seats (SLOT_ANGLE, 13 deg), and C's gripper busy: refused
+    board = (BOARD[0], BOARD[1], _angled_clip(16.0))
+    with pytest.raises(RouteError, match=r"16 deg across .* \(F seats at most 13 deg\)"):
+        plan_routes(RouteProblem(board, (w1, w2), ROBOT))
     # within F_ANGLE, one arm even with the other free
     p = plan_routes(RouteProblem((BOARD[0], _angled_clip(8.0)), (w1,), ROBOT))
     assert "parallel_clipping" not in names(p)
@@ -571,13 +576,17 @@ def test_c_grasps_so_that_the_near_span_lies_straight_when_released(held: float)
     assert straight <= grasp <= straight + 0.02
 
 
-def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
+def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """F leaves the gripper level with the jaws' top, not where it aimed.
 
     Slid out from there along C1's slot, the fingers would pass over C2 too
     low (random board 208802845: E after F1 carried them onto F3's jaws); the
     plan first turns the cable up about C1's exit, no steeper than the clip holds.
     """
+    # C1 is 18 deg off the line from A1: F takes it here (the slide is the point)
+    monkeypatch.setattr(planner, "SLOT_ANGLE", math.radians(20.0))
     from tautwire.tasks.planner import CLIP_RISE
 
     c6 = BoardFixture("C6", "clip", (0.58, 0.20, 0.08), yaw=0.435, push_force=2.5, length=0.03)
@@ -601,12 +610,16 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first() -> None:
     assert not any(s.why.startswith("lift the cable clear") for s in p.steps)
 
 
-def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first() -> None:
+def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     """The fingers must clear the clip the slide brings cable towards, not only the others.
 
     Random board 1808415002: E after F2 slid the gripper along F2's slot over
     F3, 126 mm straight on, and pulled 25 N.
     """
+    # C1 is 18 deg off the line from A1: F takes it here (the slide is the point)
+    monkeypatch.setattr(planner, "SLOT_ANGLE", math.radians(20.0))
     busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
     w1 = cable("W1", [RouteEntry("C1"), RouteEntry("C2")], length=0.9)
     p = plan_routes(RouteProblem(BOARD, (w1, busy), ROBOT))

@@ -71,9 +71,14 @@ Point = tuple[float, float, float]
 Side = Literal["left", "right"]
 ParamValue = bool | float | str | list[float]
 
-#: F is planned only where the slot is this much inside F's own limit
-#: (the contact it aims from is an estimate) [rad].
-SLOT_ANGLE = MAX_SLOT_ANGLE - math.radians(5.0)
+#: F is planned only up to this angle [rad] between the slot and the cable,
+#: where the other gripper is busy and C cannot take the clip: beyond it one
+#: arm kinks the cable where it enters the clip and only the far side's
+#: slope presses that end in (a level anchor-clip scene seated up to 15
+#: deg and missed 17 and 20 deg; random boards missed at 13.4-18.7 deg,
+#: 13.6 and 17.2 deg at c5c448e). F's own precondition is looser
+#: (``MAX_SLOT_ANGLE``, 25 deg).
+SLOT_ANGLE = min(math.radians(13.0), MAX_SLOT_ANGLE)
 #: Beyond this angle [rad] between the slot and the cable, C clips where the
 #: other gripper is free, F only where it is not. One arm kinks the cable
 #: where it enters the clip, and only the far side's slope presses that end
@@ -1228,7 +1233,7 @@ class _Planner:
                 raise self.fail(
                     cable,
                     f"the slot is {math.degrees(angle):.0f} deg across the cable's line from "
-                    f"{_fmt(c)} (F takes at most {math.degrees(SLOT_ANGLE):.0f} deg) and C needs "
+                    f"{_fmt(c)} (F seats at most {math.degrees(SLOT_ANGLE):.0f} deg) and C needs "
                     f"the other gripper, but {self.why_other_busy(cable)}",
                 )
             self.plan_parallel_clip(cable, clip, slot, exit_point, other)
