@@ -147,3 +147,33 @@ def test_clip_then_slide_then_turn_about_the_clip() -> None:
     )
     _all_true(result)
     assert "against C1" in result.steps[3]["truth"]["detail"]
+
+
+@pytest.mark.slow
+def test_h_from_across_the_board_travels_above_the_taut_cable() -> None:
+    """The free gripper rises first, travels high, then comes down onto the cable.
+
+    Random board 1695658280: the left gripper, freed low at a clip, went
+    straight for W2 across the board and pulled 27 N.
+    """
+    from tautwire.primitives.grasp_tensioned import NEAR, TRAVEL_HEIGHT
+
+    seed = trial_seed(0, "H", 0)
+    doc = scenario_document(trial_scene("H", seed).scenario)
+    task = list(doc["task"])
+    grasp = task[-1]
+    assert grasp["primitive"] in ("grasp_tensioned", "H")
+    # start the grasping gripper low and far across the board from its goal
+    arm = grasp["arm"]
+    doc["robot"]["grippers"][arm]["position"] = [0.55, 0.0 if arm == "right" else 0.05, 0.07]
+    path: list[Any] = []
+
+    def tick(rec: Any) -> None:
+        if rec.primitive.letter == "H":
+            path.append(rec.observation.gripper(arm).position.copy())
+
+    result, _, _ = run_scenario(scenario_from_data(doc), seed, on_tick=tick)
+    _all_true(result)
+    start, end = path[0], path[-1]
+    assert float(((start - end)[:2] ** 2).sum()) ** 0.5 > NEAR
+    assert max(float(p[2]) for p in path) >= TRAVEL_HEIGHT - 0.005

@@ -27,6 +27,14 @@ APPROACH_HEIGHT = 0.04
 REACHED = 0.003
 #: Speed [m/s] of the final descent onto the cable.
 DESCENT_SPEED = 0.03
+#: Lowest height [m] above the board at which the free gripper travels to
+#: the goal, and its clearance [m] over the sensing gripper (the taut
+#: cable runs no higher): random board 1695658280's left gripper, freed
+#: low at a clip, went straight for W2 across the board and pulled 27 N.
+TRAVEL_HEIGHT = 0.15
+TRAVEL_CLEARANCE = 0.04
+#: Horizontal distance [m] to the goal within which the gripper goes straight.
+NEAR = 0.05
 
 
 class GraspTensioned(Primitive):
@@ -37,9 +45,12 @@ class GraspTensioned(Primitive):
     linear interpolation between the edge's end points, with the sag of a
     taut span, rho g a^2 delta (1 - delta) / (2 f), added below the chord),
     recomputed every period as the model updates. The free gripper opens,
-    moves above the goal with its x-axis along the cable, descends onto it
-    and closes. The grasp is confirmed by the fingers' opening (they stop
-    on the cable instead of closing fully). The model then gets a gripper
+    rises to ``TRAVEL_HEIGHT`` (and ``TRAVEL_CLEARANCE`` over the sensing
+    gripper, above which the taut cable does not run) where the goal is more
+    than ``NEAR`` away horizontally, travels over it there, moves above the
+    goal with its x-axis along the cable, descends onto it and closes. The
+    grasp is confirmed by the fingers' opening (they stop on the cable
+    instead of closing fully). The model then gets a gripper
     point at ``at``, which becomes the far end of the sensing gripper's edge.
 
     Success: the fingers closed on the cable and the sensing gripper still
@@ -81,6 +92,9 @@ class GraspTensioned(Primitive):
         self._phase_since = obs.time
         self._tension: LowPass[float] = LowPass()
         self._hold = current_pose(obs)
+        me = obs.gripper(self.arm).position
+        self._start = me.copy()
+        self._travel_z = max(float(me[2]), TRAVEL_HEIGHT)
         est = ctx.estimator
         if self.arm == est.arm:
             self.outcome = Outcome.failure(
@@ -98,6 +112,11 @@ class GraspTensioned(Primitive):
                 "precondition",
                 f"at = {self.at:g} m is not on the taut edge [{lo:.3f}, {hi:.3f}] m",
             )
+            return
+        # far across the board: up first, over, then down onto the cable
+        goal, _ = self._goal(ctx, ctx.tension or 0.0, obs.gripper(self.arm).orientation)
+        if float(np.hypot(*(goal - me)[:2])) > NEAR:
+            self.phase = "rise"
 
     def _goal(
         self, ctx: PrimitiveContext, tension: float, orientation: FloatArray
@@ -131,7 +150,21 @@ class GraspTensioned(Primitive):
         goal, q = self._goal(ctx, state.tension, me.orientation)
         self.goal = goal
         fingers = GripperCommand("open")
-        if self.phase == "approach":
+        if self.phase in ("rise", "traverse"):
+            travel = max(
+                self._travel_z,
+                float(goal[2]) + APPROACH_HEIGHT,
+                float(obs.gripper(sensing).position[2]) + TRAVEL_CLEARANCE,
+            )
+            self._travel_z = travel
+            if self.phase == "rise":
+                target = np.array([self._start[0], self._start[1], travel])
+            else:
+                target = np.array([goal[0], goal[1], travel])
+            if float(np.linalg.norm(me.position - target)) < 2.0 * REACHED:
+                self.phase = "traverse" if self.phase == "rise" else "approach"
+                self._phase_since = obs.time
+        elif self.phase == "approach":
             target = goal + np.array([0.0, 0.0, APPROACH_HEIGHT])
             if float(np.linalg.norm(me.position - target)) < REACHED:
                 self.phase, self._phase_since = "descend", obs.time
