@@ -44,7 +44,7 @@ def move_hold(graph: PathGraph, index: int, delta: float) -> None:
     ):
         graph.remove_point(far)
         if delta < 0.0:  # the points before the gripper shifted down by one
-            index, grow, shrink, far = index - 1, grow - 1, shrink - 1, far - 1
+            grow, shrink, far = grow - 1, shrink - 1, far - 1
     if graph.edges[shrink].length <= d:
         raise InvalidArgumentError(
             f"only {graph.edges[shrink].length:.3f} m of cable is left beyond the gripper,"
