@@ -77,3 +77,44 @@ def test_bad_lines_are_skipped_and_bad_arguments_refused():
         PegAxisFit([0.0, 0.0, 0.0], 0.01, 0.001)
     with pytest.raises(InvalidArgumentError):
         PegAxisFit(Z, -0.01, 0.001)
+
+
+def drifting_lines(centre, radius, start, turn, drift, distance=0.18, n=60):
+    """Tangent lines whose offset from the axis drifts from radius + drift to radius - drift."""
+    out = []
+    for j, a in enumerate(np.linspace(start, start + turn, n)):
+        u = np.array([math.cos(a), math.sin(a), 0.0])
+        side = -np.cross(Z, u)
+        r = radius + drift * (1.0 - 2.0 * j / (n - 1))
+        out.append((centre - r * side + distance * u, -3.0 * u, side))
+    return out
+
+
+def test_an_offset_drift_along_a_short_wrap_stays_within_the_reported_covariance():
+    # random board 1098434850's I about F4: a cable just caught on the peg,
+    # turned 34 deg, its lines' offsets drifting 4 mm from end to middle; the
+    # axis ends about 13 mm along the lines from the peg
+    centre = np.array([0.24, -0.13, 0.08])
+    fit = PegAxisFit(Z, 0.0115, 0.002)
+    for q, f, side in drifting_lines(centre, 0.0115, -0.1, math.radians(34.0), 0.004):
+        fit.add(q, f, side, 1e-6)
+    est = fit.estimate(centre)
+    assert est is not None
+    err = est[0][:2] - centre[:2]
+    assert np.linalg.norm(err) > 0.008  # the drift moves the axis far along the lines
+    nees = float(err @ np.linalg.solve(est[1][:2, :2], err))
+    assert nees <= 11.8  # chi-square, 2 dof, 99.7 %
+
+
+def test_an_offset_drift_matters_less_the_further_the_cable_wraps():
+    centre = np.array([0.24, -0.13, 0.08])
+    stds = []
+    for turn in (34.0, 130.0, 360.0):
+        fit = PegAxisFit(Z, 0.0115, 0.002)
+        for q, f, side in drifting_lines(centre, 0.0115, 0.0, math.radians(turn), 0.0, n=120):
+            fit.add(q, f, side, 1e-6)
+        est = fit.estimate(centre)
+        assert est is not None
+        stds.append(math.sqrt(float(np.linalg.eigvalsh(est[1][:2, :2]).max())))
+    assert stds[0] > stds[1] > stds[2]
+    assert stds[1] < 0.005  # a third of a turn keeps its trust (tolerance 9 mm and more)

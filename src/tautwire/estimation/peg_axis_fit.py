@@ -20,6 +20,14 @@ The covariance is honest about that wander: the weighted residuals' scatter
 replaces the noise model's, and counts only as many independent lines as the
 wrap has :data:`BLOCK_ANGLE` steps (neighbouring lines err together), plus
 what R's prior std does to c (a consider parameter).
+
+A second consider parameter is R's drift along the wrap: where the cable
+first bears on a peg it bends round it less tightly than after it has
+wrapped further, so the lines' offsets drift from one end of the wrap to
+the other (:data:`OFFSET_DRIFT`). A drift that R held fixed cannot absorb
+moves the axis along the lines, by about 2 drift / spread [rad]: over a
+short wrap that is the largest error of the fit, however well the lines
+fit one another.
 """
 
 from __future__ import annotations
@@ -38,6 +46,13 @@ FloatArray = NDArray[np.float64]
 BLOCK_ANGLE = math.radians(5.0)
 #: Smallest spread [rad] of line directions before the fit gives an estimate.
 MIN_SPREAD = math.radians(15.0)
+#: Std [m] of the lines' offset drift between the middle of a wrap and either
+#: end (a consider parameter, see the module docstring). Measured against the
+#: true axis: robustness trials 2, 3, 4, 6, 9 of seed 0 (wraps of 49-138 deg)
+#: drifted 0.3-2.2 mm; random board 1098434850's I about peg F4, a cable just
+#: caught on the peg and turned 34 deg, 4.0 mm, which left the axis 13.6 mm
+#: along the lines at a reported 4.6 mm std.
+OFFSET_DRIFT = 0.002
 
 
 class PegAxisFit:
@@ -63,6 +78,7 @@ class PegAxisFit:
         self._yy = 0.0  # sum w y^2
         self._n_w = np.zeros(2)  # sum w n  (for dc/dR)
         self._w = 0.0  # sum w
+        self._n_phi = np.zeros(2)  # sum w n phi  (for dc/d(drift))
         self.count = 0
         self._angle: float | None = None  # the last line's direction, unwrapped [rad]
         self._angle_range = (0.0, 0.0)  # (smallest, largest) unwrapped direction [rad]
@@ -106,6 +122,7 @@ class PegAxisFit:
             lo, hi = self._angle_range
             self._angle_range = (min(lo, angle), max(hi, angle))
         self._angle = angle
+        self._n_phi += w * angle * n
 
     @property
     def spread(self) -> float:
@@ -141,6 +158,10 @@ class PegAxisFit:
         cov2 = A_inv * scatter * (self.count / blocks)
         dc_dR = A_inv @ self._n_w
         cov2 = cov2 + self.radius_std**2 * np.outer(dc_dR, dc_dR)
+        # R drifting from -drift at the wrap's first direction to +drift at its last
+        lo, hi = self._angle_range
+        dc_drift = A_inv @ (self._n_phi - 0.5 * (lo + hi) * self._n_w) / max(0.5 * (hi - lo), 1e-9)
+        cov2 = cov2 + OFFSET_DRIFT**2 * np.outer(dc_drift, dc_drift)
         h = np.asarray(height_point, dtype=float).reshape(3)
         along = float(self.axis @ h)
         position: FloatArray = self._basis.T @ c + self.axis * along
