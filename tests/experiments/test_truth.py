@@ -7,6 +7,7 @@ import math
 import numpy as np
 import pytest
 
+from tautwire.errors import InvalidArgumentError
 from tautwire.experiments.truth import (
     ANGLE_TOLERANCE,
     CONTACT_TOLERANCE,
@@ -387,3 +388,28 @@ def test_a_trusted_clip_point_is_right_anywhere_along_its_slot() -> None:
     assert judged(seat + np.array([0.014, 0.0, 0.0]))  # near the slot's exit
     assert not judged(seat + np.array([0.0, 0.01, 0.0]))  # 10 mm beside the slot
     assert not judged(seat + np.array([0.05, 0.0, 0.0]))  # 35 mm past the exit
+
+
+def test_a_peg_estimate_is_scored_against_the_band_the_peg_holds_the_cable_over(
+    peg_world: tuple[SimWorld, GroundTruth],
+) -> None:
+    # a winding climbs its peg: the model's point is where the span leaves it,
+    # anywhere in the band of loaded contacts, not their centre of pressure
+    world, truth = peg_world
+    band = truth.peg_band("P", "W")
+    assert band is not None
+    lo, hi = band
+    centre = _peg_truth(truth)
+    assert lo - 1e-9 <= centre[2] <= hi + 1e-9
+    assert hi <= 0.10 + 0.05  # at most the peg's top
+    for z, error in ((lo, 0.0), (hi, 0.0), (hi + 0.012, 0.012)):
+        estimate = np.array([centre[0], centre[1], z])
+        graph = _graph(
+            [("fixed", "A", ANCHOR, 5e-4), ("contact", "P", estimate, 1e-3)],
+            world.gripper_pose("left")[0],
+        )
+        check = check_contacts(graph, truth, "W", trusted_std=0.01)[1]
+        assert check.error == pytest.approx(error, abs=1e-9)
+    assert not check.within  # 12 mm above the band: beyond radius + 3 mm
+    with pytest.raises(InvalidArgumentError):
+        truth.peg_band("A", "W")

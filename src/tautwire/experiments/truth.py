@@ -36,11 +36,13 @@ the model (every successful step)
     estimates the robot acts on) is within tolerance of the true contact it
     stands for: :data:`CONTACT_TOLERANCE` (3 mm) for an anchor or a clip,
     the peg's radius + 3 mm for a peg (whose truth is the point on its axis
-    at the cable's height). And no point is made up: every contact or fixed
-    point of the model stands for a fixture the cable truly touches (a point
-    named after a fixture stands for it; an unnamed, estimated point for the
-    nearest true contact within :data:`ASSOCIATION_RADIUS` that no other
-    point stands for).
+    nearest the estimate within the band of heights over which the peg
+    holds the cable, :meth:`GroundTruth.peg_band`: a winding climbs the peg,
+    and the model's point is where the span leaves it). And no point is
+    made up: every contact or fixed point of the model stands for a fixture
+    the cable truly touches (a point named after a fixture stands for it; an
+    unnamed, estimated point for the nearest true contact within
+    :data:`ASSOCIATION_RADIUS` that no other point stands for).
 
 A failed step always agrees: a failure with a named cause claims nothing
 about the world, so it cannot be false (the detail still says what the
@@ -308,6 +310,13 @@ def _check(
         seat = truth.seat(name, cable)
         entry = seat + (seat - t)
         t = _nearest_on_segment(entry, t, pt.position)
+    elif truth.fixture_type(name) == "peg":
+        # a peg holds the cable over a band of heights (a winding climbs it):
+        # its axis point there nearest the estimate
+        band = truth.peg_band(name, cable)
+        if band is not None:
+            t = t.copy()
+            t[2] = min(max(float(pt.position[2]), band[0]), band[1])
     return ContactCheck(
         pt.label,
         name,
