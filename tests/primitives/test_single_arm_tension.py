@@ -5,6 +5,7 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.primitives import SingleArmTension
 from tautwire.robot import Command
 from tautwire.tasks import TickRecord, run_step
+from tautwire.tasks.runner import PROTECTIVE_STOP
 from tests.primitives.conftest import CONTACT, GRIPPER, context
 from tests.primitives.spring_robot import SpringCableRobot
 
@@ -66,7 +67,7 @@ def test_no_contact_when_nothing_holds_the_cable() -> None:
 def test_force_limit_ends_the_step() -> None:
     robot = SpringCableRobot(CONTACT, GRIPPER, 1000.0, slack=0.0, seed=2)
     report = run_step(robot, SingleArmTension("left", 20.0), context(), force_limit=15.0)
-    assert report.cause == "force_limit" and report.max_force > 15.0
+    assert report.cause == "force_limit" and report.max_force > PROTECTIVE_STOP * 15.0
 
 
 def test_arguments_are_checked() -> None:

@@ -1,7 +1,8 @@
 """Run a primitive on any :class:`~tautwire.robot.Robot` until it ends.
 
 The runner enforces what no primitive may forget: the force limit (a
-measured force above it ends the step with cause ``force_limit``), the
+measured force above its protective stop, :data:`PROTECTIVE_STOP` of the
+limit, ends the step with cause ``force_limit``), the
 primitive's timeout, and a clean end when the robot or its data fail. Every
 sample and command goes through a :class:`~tautwire.tasks.robot_guard.RobotGuard`
 (non-finite, stale and outlying samples, lost commands, robot exceptions,
@@ -19,6 +20,14 @@ from tautwire.errors import TautwireError
 from tautwire.primitives import Outcome, Primitive, PrimitiveContext
 from tautwire.robot import Arm, Command, GripperCommand, Observation, Robot
 from tautwire.tasks.robot_guard import RobotGuard
+
+#: Share of the force limit at which a measured force stops the step. The
+#: stop comes a control period after the force that trips it, and the
+#: guard holds back a jump for one sample (an outlier, or the start of a
+#: real force): stopped at the limit itself, random boards 303464894,
+#: 1652323633, 1695658280 and 2071274635 (seed 0) read 15.1-16.2 N when the
+#: step ended and truly transmitted 15.1-16.5 N. 90 % leaves 1.5 N for that.
+PROTECTIVE_STOP = 0.9
 
 
 @dataclass(frozen=True)
@@ -108,7 +117,8 @@ def run_step(
         ctx: The shared context (model, estimators, controller).
         on_tick: Called after every control period in which the primitive
             was stepped (recording, plotting).
-        force_limit: Force limit [N]; default ``ctx.limits.max_force``.
+        force_limit: Force limit [N]; default ``ctx.limits.max_force``. The step
+            stops at :data:`PROTECTIVE_STOP` of it.
         keep_open: Grippers whose fingers stay open (they let their cable
             go; see :func:`keep_fingers_open`).
         cable: The cable the step works on (for the report).
@@ -139,9 +149,12 @@ def run_step(
                 continue
             force = _max_measured_force(obs)
             max_force = max(max_force, force)
-            if force > limit:
+            if force > PROTECTIVE_STOP * limit:
                 outcome = Outcome.failure(
-                    "force_limit", f"measured {force:.2f} N, above the limit of {limit:g} N"
+                    "force_limit",
+                    f"measured {force:.2f} N, above the protective stop at"
+                    f" {PROTECTIVE_STOP * limit:.1f} N ({PROTECTIVE_STOP:.0%} of the"
+                    f" {limit:g} N limit)",
                 )
                 break
             if not started:
