@@ -413,3 +413,28 @@ def test_a_peg_estimate_is_scored_against_the_band_the_peg_holds_the_cable_over(
     assert not check.within  # 12 mm above the band: beyond radius + 3 mm
     with pytest.raises(InvalidArgumentError):
         truth.peg_band("A", "W")
+
+
+def test_a_peg_on_the_wrong_side_of_the_modelled_cable_disagrees(
+    peg_world: tuple[SimWorld, GroundTruth],
+) -> None:
+    # the cable bends left round P (towards +y, seen from its anchor): a model
+    # that has it turning right there is wrong whatever its std
+    world, truth = peg_world
+    gripper = world.gripper_pose("left")[0]
+    for position, agrees in (((0.15, 0.0), True), ((0.15, 0.10), False)):
+        estimate = np.array([*position, 0.12])
+        graph = _graph([("fixed", "A", ANCHOR, 5e-4), ("contact", "P", estimate, 0.05)], gripper)
+        checks = check_contacts(graph, truth, "W", trusted_std=0.01)
+        assert checks[1].true_side == "left" and not checks[1].trusted
+        assert checks[1].side == ("left" if agrees else "right")
+        verdict = judge_model(checks)
+        assert verdict.agrees is agrees
+    assert "truly passes it on its left, the model on its right" in verdict.detail
+    # a wound point's side is its wrap's sign
+    graph = _graph(
+        [("fixed", "A", ANCHOR, 5e-4), ("contact", "P", _peg_truth(truth), 1e-3)], gripper
+    )
+    for wrap, agrees in ((2.0 * math.pi, True), (-2.0 * math.pi, False), (0.05, True)):
+        graph.points[1].wrap = wrap
+        assert judge_model(check_contacts(graph, truth, "W", trusted_std=0.01)).agrees is agrees

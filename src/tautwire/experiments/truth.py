@@ -42,7 +42,11 @@ the model (every successful step)
     made up: every contact or fixed point of the model stands for a fixture
     the cable truly touches (a point named after a fixture stands for it; an
     unnamed, estimated point for the nearest true contact within
-    :data:`ASSOCIATION_RADIUS` that no other point stands for).
+    :data:`ASSOCIATION_RADIUS` that no other point stands for). And every
+    peg lies on the side of the cable the model has it on (its wrap's
+    sign, else the turn of the model's cable there; :data:`SIDE_TURN`),
+    whatever the point's std: a cable that came unwound from a peg while
+    the model still has it wound is a wrong model.
 
 A failed step always agrees: a failure with a named cause claims nothing
 about the world, so it cannot be false (the detail still says what the
@@ -86,6 +90,9 @@ TrustLimit = float | Callable[[Any], float]
 
 #: Tolerance [m] of a contact estimate: for an anchor or a clip; a peg adds its radius.
 CONTACT_TOLERANCE = 0.003
+#: Smallest turn [rad] of the model's cable at a peg (or of its wrap) that
+#: says which side of the cable the peg is on.
+SIDE_TURN = math.radians(10.0)
 #: An unnamed model point further [m] from every free true contact stands for none.
 ASSOCIATION_RADIUS = 0.03
 #: Allowed relative error of the true mean tension against the set point.
@@ -141,6 +148,10 @@ class ContactCheck:
         trusted: Whether the robot trusts the estimate (std at most trusted_std).
         reason: Why the point is made up ("" otherwise).
         cable: The cable whose model holds the point ("" when not said).
+        side: For a peg, the side of the cable the model has it on
+            (``"left"``/``"right"`` along the cable from its start; ""
+            where the model's cable turns by less than :data:`SIDE_TURN`).
+        true_side: The side of the cable the peg truly is on ("" unknown).
     """
 
     label: str
@@ -154,6 +165,13 @@ class ContactCheck:
     trusted: bool
     reason: str = ""
     cable: str = ""
+    side: str = ""
+    true_side: str = ""
+
+    @property
+    def wrong_side(self) -> bool:
+        """Whether the model has the cable round the peg on the other side than it is."""
+        return bool(self.side and self.true_side and self.side != self.true_side)
 
     @property
     def made_up(self) -> bool:
@@ -173,9 +191,14 @@ class ContactCheck:
             return f"{self.label} at {_mm(self.estimate)} is made up ({self.reason})"
         assert self.error is not None and self.tolerance is not None
         std = "" if self.std is None else f", std {1e3 * float(np.max(self.std)):.1f} mm"
+        side = (
+            f"; the cable truly passes it on its {self.true_side}, the model on its {self.side}"
+            if self.wrong_side
+            else ""
+        )
         return (
             f"{self.label}: {1e3 * self.error:.1f} mm from the true {self.fixture_type} "
-            f"{self.fixture} (tolerance {1e3 * self.tolerance:.1f} mm{std})"
+            f"{self.fixture} (tolerance {1e3 * self.tolerance:.1f} mm{std}){side}"
         )
 
 
@@ -263,7 +286,53 @@ def check_contacts(
             checks[k] = _made_up(
                 points[k], trusted_std, f"the nearest free true contact is {where}"
             )
-    return [replace(c, cable=cable) for c in checks if c is not None]
+    polyline = truth.polyline(cable)
+    out: list[ContactCheck] = []
+    for pt, c in zip(points, checks, strict=True):
+        assert c is not None
+        if c.fixture_type == "peg" and c.truth is not None:
+            c = replace(c, side=model_side(graph, pt), true_side=peg_side(polyline, c.truth))
+        out.append(replace(c, cable=cable))
+    return out
+
+
+def model_side(graph: PathGraph, point: Any) -> str:
+    """The side of the cable the model has ``point`` (a peg's) on: its wrap, else its turn.
+
+    ``"left"`` or ``"right"`` along the cable from its start; "" where the
+    model's cable turns by less than :data:`SIDE_TURN` there (or the point
+    has no neighbour on either side).
+    """
+    if point.wrap is not None:
+        if abs(point.wrap) < SIDE_TURN:
+            return ""
+        return "left" if point.wrap > 0.0 else "right"
+    k = next((i for i, p in enumerate(graph.points) if p is point), None)
+    if k is None or k == 0 or k == len(graph.points) - 1:
+        return ""
+    a = point.position[:2] - graph.points[k - 1].position[:2]
+    b = graph.points[k + 1].position[:2] - point.position[:2]
+    na, nb = float(np.hypot(*a)), float(np.hypot(*b))
+    if na < 1e-9 or nb < 1e-9:
+        return ""
+    cross = float(a[0] * b[1] - a[1] * b[0]) / (na * nb)
+    dot = float(a @ b) / (na * nb)
+    if abs(math.atan2(cross, dot)) < SIDE_TURN:
+        return ""
+    return "left" if cross > 0.0 else "right"
+
+
+def peg_side(polyline: FloatArray, axis: FloatArray) -> str:
+    """The side of the cable (``"left"``/``"right"`` along it from its start) a peg is on.
+
+    Seen at the cable's vertex nearest the peg's axis (horizontally).
+    """
+    flat = polyline[:, :2] - axis[:2]
+    i = int(np.argmin(np.hypot(flat[:, 0], flat[:, 1])))
+    lo, hi = max(i - 1, 0), min(i + 1, len(polyline) - 1)
+    t = polyline[hi] - polyline[lo]
+    r = axis - polyline[i]
+    return "left" if float(t[0] * r[1] - t[1] * r[0]) > 0.0 else "right"
 
 
 def _std(covariance: FloatArray | None) -> FloatArray | None:
@@ -340,9 +409,14 @@ def _nearest_on_segment(a: FloatArray, b: FloatArray, p: FloatArray) -> FloatArr
 
 
 def judge_model(checks: list[ContactCheck]) -> TruthCheck:
-    """Agrees when no point is made up and every trusted estimate is within tolerance."""
+    """Agrees when the model makes nothing up and has every contact right.
+
+    Every trusted estimate is within tolerance, and every peg is on the side
+    of the cable the model has it on (whatever its std: the route the robot
+    plans on depends on it).
+    """
     made_up = [c for c in checks if c.made_up]
-    wrong = [c for c in checks if not c.made_up and c.trusted and not c.within]
+    wrong = [c for c in checks if not c.made_up and ((c.trusted and not c.within) or c.wrong_side)]
     if made_up or wrong:
         return TruthCheck(
             False, "the model is wrong: " + "; ".join(c.text() for c in made_up + wrong)
@@ -1055,13 +1129,7 @@ def route_truth(truth: GroundTruth, cable: str, route: list[tuple[str, str | Non
                 ok = False
                 parts.append(f"{fixture}: not touched")
             else:
-                flat = pts[:, :2] - axis[:2]
-                i = int(np.argmin(np.hypot(flat[:, 0], flat[:, 1])))
-                lo, hi = max(i - 1, 0), min(i + 1, len(pts) - 1)
-                t = pts[hi] - pts[lo]
-                r = axis - pts[i]
-                cross = float(t[0] * r[1] - t[1] * r[0])
-                on = "left" if cross > 0.0 else "right"
+                on = peg_side(pts, axis)
                 ok = side is None or on == side
                 parts.append(f"{fixture}: touched, on the cable's {on}")
         else:
