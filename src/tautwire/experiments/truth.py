@@ -93,6 +93,9 @@ CONTACT_TOLERANCE = 0.003
 #: Smallest turn [rad] of the model's cable at a peg (or of its wrap) that
 #: says which side of the cable the peg is on.
 SIDE_TURN = math.radians(10.0)
+#: Largest height difference [m] from where a peg holds the cable of the
+#: cable's vertices that tell which side of it the peg is on.
+SIDE_HEIGHT = 0.01
 #: An unnamed model point further [m] from every free true contact stands for none.
 ASSOCIATION_RADIUS = 0.03
 #: Allowed relative error of the true mean tension against the set point.
@@ -325,10 +328,16 @@ def model_side(graph: PathGraph, point: Any) -> str:
 def peg_side(polyline: FloatArray, axis: FloatArray) -> str:
     """The side of the cable (``"left"``/``"right"`` along it from its start) a peg is on.
 
-    Seen at the cable's vertex nearest the peg's axis (horizontally).
+    Seen at the cable's vertex nearest the peg's axis (horizontally) among
+    those within :data:`SIDE_HEIGHT` of the height of ``axis`` (the point
+    on the axis where the peg holds the cable): the shipped harness's W2,
+    wound round P2 at 86 mm, has its tail lying on the table round P2's
+    foot the other way.
     """
     flat = polyline[:, :2] - axis[:2]
-    i = int(np.argmin(np.hypot(flat[:, 0], flat[:, 1])))
+    d = np.hypot(flat[:, 0], flat[:, 1])
+    level = np.abs(polyline[:, 2] - axis[2]) <= SIDE_HEIGHT
+    i = int(np.argmin(np.where(level, d, np.inf))) if level.any() else int(np.argmin(d))
     lo, hi = max(i - 1, 0), min(i + 1, len(polyline) - 1)
     t = polyline[hi] - polyline[lo]
     r = axis - polyline[i]
