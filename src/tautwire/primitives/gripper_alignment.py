@@ -19,6 +19,13 @@ from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 
+#: The turn pauses while the tension is above this multiple of its set point
+#: (the force control then lets the cable out before the fingers turn on):
+#: random board 1695658280's G turned 85 deg with the cable resting on the
+#: clip 74 mm ahead and pulled from 3 to 13 N.
+PAUSE_TENSION = 2.0
+
+
 class GripperAlignment(Primitive):
     """Primitive G: align the tool x-axis with the cable direction measured by the force.
 
@@ -29,7 +36,9 @@ class GripperAlignment(Primitive):
     shortest arc from the tool axis the cable leaves along, +x or -x
     (:class:`~tautwire.primitives.tool_axis.ToolAxis`), onto the cable's
     direction (the low-passed weight-compensated force's): never a half
-    turn. The position holds.
+    turn. The position holds. While the tension is above
+    ``PAUSE_TENSION`` times its set point the orientation holds too, until
+    the force control has let the cable out.
 
     Success: the angle between that tool axis and the cable stays below
     ``tolerance`` for ``hold_time``. Failure: ``slipped`` if the cable goes
@@ -93,7 +102,8 @@ class GripperAlignment(Primitive):
         if state.taut:
             smoothed = self._cable.update(obs.time, state.direction)
             self.angle = self._axis.angle(me.orientation, smoothed)
-            q_target = self._axis.target(me.orientation, smoothed)
+            if state.tension <= PAUSE_TENSION * self.force:
+                q_target = self._axis.target(me.orientation, smoothed)
         mine = Pose(self._hold[0 if self.arm == "left" else 1].position, q_target)
         desired = with_pose(self._hold, self.arm, mine)
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
