@@ -18,7 +18,6 @@ from tautwire.primitives.slack_watch import SlackWatch
 from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
-
 #: The turn pauses while the tension is above this multiple of its set point
 #: (the force control then lets the cable out before the fingers turn on):
 #: random board 1695658280's G turned 85 deg with the cable resting on the
