@@ -13,11 +13,17 @@ from .conftest import CONTACT, GRIPPER, context
 from .spring_robot import SpringCableRobot
 
 
-def test_a_contact_declared_while_g_turns_in_place_is_dropped() -> None:
-    robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, noise=0.05, seed=2)
-    robot.rest -= 3.0 / 200.0
-    yaw = math.radians(40.0)
+def turned_robot(pull: float, yaw_deg: float, seed: int) -> SpringCableRobot:
+    """A 200 N/m cable pulled to ``pull`` [N], the tool turned ``yaw_deg`` off it."""
+    robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, noise=0.05, seed=seed)
+    robot.rest -= pull / 200.0
+    yaw = math.radians(yaw_deg)
     robot.q = np.array([math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)])
+    return robot
+
+
+def test_a_contact_declared_while_g_turns_in_place_is_dropped() -> None:
+    robot = turned_robot(3.0, 40.0, seed=2)
     ctx = context(k_initial=200.0, estimation_period=0.04)
     ctx.tension = 3.0
     before = [(p.kind, p.label) for p in ctx.graph.points]
@@ -46,10 +52,7 @@ def test_the_turn_waits_while_the_tension_is_far_above_its_set_point() -> None:
     # the cable starts pulled to 8 N, the set point is 3 N: the fingers turn only
     # once the force control has let the cable out (random board 1695658280:
     # turning 85 deg against a cable resting on a clip pulled 13 N)
-    robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, noise=0.05, seed=3)
-    robot.rest -= 8.0 / 200.0
-    yaw = math.radians(60.0)
-    robot.q = np.array([math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)])
+    robot = turned_robot(8.0, 60.0, seed=3)
     ctx = context(k_initial=200.0, estimation_period=0.04)
     ticks: list[tuple[float, float]] = []
 
