@@ -49,6 +49,41 @@ def test_a_taut_move_reaches_the_target_across_the_cable_and_keeps_the_tension()
     assert abs(robot.tension() - 3.0) < 0.6
 
 
+def _tool_x(q: np.ndarray) -> np.ndarray:
+    return np.array(
+        [
+            1.0 - 2.0 * (q[2] ** 2 + q[3] ** 2),
+            2.0 * (q[1] * q[2] + q[0] * q[3]),
+            2.0 * (q[1] * q[3] - q[0] * q[2]),
+        ]
+    )
+
+
+@pytest.mark.parametrize(
+    ("options", "follows"),
+    [({}, True), ({"orientation": [1, 0, 0, 0]}, False), ({"observe": False}, False)],
+)
+def test_a_taut_observed_move_turns_the_tool_along_the_cable_as_it_swings(
+    options: dict[str, object], follows: bool
+) -> None:
+    # 150 mm across a 0.3 m cable swings it by 27 deg: the tool follows (a G
+    # after the move had 85 deg to turn otherwise, random board 1695658280);
+    # a move told its orientation, or one that does not observe (a sweep onto
+    # a peg), keeps the orientation it was given
+    robot = _taut_robot(seed=4)
+    ctx = context(k_initial=200.0)
+    ctx.tension = 3.0
+    target = (GRIPPER + np.array([0.0, 0.15, 0.0])).tolist()
+    report = run_step(robot, Move("left", to=target, **options), ctx)  # type: ignore[arg-type]
+    assert report.success, report.detail
+    cable = (CONTACT - robot.p) / np.linalg.norm(CONTACT - robot.p)
+    off = float(np.degrees(np.arccos(min(1.0, abs(float(_tool_x(robot.q) @ cable))))))
+    if follows:
+        assert off < 5.0
+    else:
+        assert np.allclose(robot.q, [1.0, 0.0, 0.0, 0.0], atol=0.02) and off > 20.0
+
+
 def test_a_move_by_an_offset_without_tension_goes_exactly_there() -> None:
     robot = SpringCableRobot(CONTACT, GRIPPER, stiffness=200.0, slack=0.1, noise=0.05)
     ctx = context()

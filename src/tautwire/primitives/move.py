@@ -18,10 +18,12 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import as_quaternion
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
+from tautwire.primitives.gripper_alignment import PAUSE_TENSION
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 FloatArray = NDArray[np.float64]
@@ -43,6 +45,15 @@ class Move(Primitive):
     the force), motion control across it (equ:HybridMFC_combination). The
     target is then reached across the cable; along it the tension decides
     where the gripper stands (the cable's length does, not the target).
+    An observed move without an ``orientation`` or a ``catch`` turns the
+    tool along the cable as it swings it (G's rule: the shortest arc onto
+    the measured direction, paused while the tension is above
+    ``PAUSE_TENSION`` times its set point), and leaves the turn out of its
+    success test (G after it finishes the turn): a move that kept the
+    tool's orientation left random board 1695658280's G 85 deg to turn
+    against a cable resting on a clip. A sweep onto a peg keeps the
+    orientation (following there, the shipped harness's winding about P2
+    after it failed at seed 4).
     Without ``taut``, or with a gripper that holds no cable, it is plain
     motion control to the target pose. The other gripper holds its pose.
 
@@ -162,6 +173,8 @@ class Move(Primitive):
             self.force = ctx.tension if ctx.tension is not None else 2.0
         self._tension: LowPass[float] = LowPass()
         self._slack = SlackWatch(1.0)
+        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
+        self._axis = ToolAxis()
 
     @property
     def keeps_tension(self) -> bool:
@@ -173,10 +186,22 @@ class Move(Primitive):
         if self.outcome.done:  # refused at the start
             return Command()
         assert self.force is not None
-        desired = with_pose(self._hold, self.arm, Pose(self.target, self._q_target))
         me = obs.gripper(self.arm)
         error = self.target - me.position
         state = ctx.estimator.update(obs) if self._sensing else None
+        follows = (
+            self.orientation is None
+            and self.observe
+            and self.catch is None
+            and state is not None
+            and self.keeps_tension
+        )
+        if follows and state is not None and state.taut:
+            # the tool turns along the cable as the cable turns (G's rule)
+            cable = self._cable.update(obs.time, state.direction)
+            if state.tension <= PAUSE_TENSION * self.force:
+                self._q_target = self._axis.target(me.orientation, cable)
+        desired = with_pose(self._hold, self.arm, Pose(self.target, self._q_target))
         if state is not None and self.keeps_tension:
             twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
             d = state.direction
@@ -193,7 +218,8 @@ class Move(Primitive):
         turn = 2.0 * math.asin(
             min(1.0, float(np.linalg.norm(quaternion_error(self._q_target, me.orientation))))
         )
-        if self.error <= self.tolerance and turn <= self.angle_tolerance and taut_enough:
+        turned = follows or turn <= self.angle_tolerance  # a follower's turn is G's job
+        if self.error <= self.tolerance and turned and taut_enough:
             how = " across the cable, taut" if self.keeps_tension else ""
             caught = ""
             if self.catch is not None and self._sensing:
