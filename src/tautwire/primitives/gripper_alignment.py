@@ -15,14 +15,8 @@ from tautwire.primitives.model_edits import drop_new_points
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
-from tautwire.primitives.tool_axis import ToolAxis
+from tautwire.primitives.tool_axis import PAUSE_TENSION, ToolAxis
 from tautwire.robot import Arm, Command, Observation
-
-#: The turn pauses while the tension is above this multiple of its set point
-#: (the force control then lets the cable out before the fingers turn on):
-#: random board 1695658280's G turned 85 deg with the cable resting on the
-#: clip 74 mm ahead and pulled from 3 to 13 N.
-PAUSE_TENSION = 2.0
 
 
 class GripperAlignment(Primitive):

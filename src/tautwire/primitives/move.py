@@ -18,12 +18,11 @@ from tautwire.errors import InvalidArgumentError
 from tautwire.model.quaternion import as_quaternion
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
-from tautwire.primitives.gripper_alignment import PAUSE_TENSION
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
-from tautwire.primitives.tool_axis import ToolAxis
+from tautwire.primitives.tool_axis import PAUSE_TENSION, ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 FloatArray = NDArray[np.float64]
