@@ -4,18 +4,15 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from tautwire.control import Pose
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
-from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import drop_new_points
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
-from tautwire.primitives.tool_axis import PAUSE_TENSION, ToolAxis
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 
@@ -80,7 +77,6 @@ class GripperAlignment(Primitive):
         ctx.estimator.learn_elasticity = False
         ctx.estimator.rotation = None
         self._hold = current_pose(obs)
-        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
         self._within_since: float | None = None
         self._slack = SlackWatch(1.0)
         self._axis = ToolAxis()
@@ -93,10 +89,11 @@ class GripperAlignment(Primitive):
         me = obs.gripper(self.arm)
         q_target = me.orientation
         if state.taut:
-            smoothed = self._cable.update(obs.time, state.direction)
-            self.angle = self._axis.angle(me.orientation, smoothed)
-            if state.tension <= PAUSE_TENSION * self.force:
-                q_target = self._axis.target(me.orientation, smoothed)
+            self.angle, turned = self._axis.follow(
+                obs.time, me.orientation, state.direction, state.tension, self.force
+            )
+            if turned is not None:
+                q_target = turned
         mine = Pose(self._hold[0 if self.arm == "left" else 1].position, q_target)
         desired = with_pose(self._hold, self.arm, mine)
         twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)

@@ -22,7 +22,7 @@ from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
-from tautwire.primitives.tool_axis import PAUSE_TENSION, ToolAxis
+from tautwire.primitives.tool_axis import ToolAxis
 from tautwire.robot import Arm, Command, Observation
 
 FloatArray = NDArray[np.float64]
@@ -172,7 +172,6 @@ class Move(Primitive):
             self.force = ctx.tension if ctx.tension is not None else 2.0
         self._tension: LowPass[float] = LowPass()
         self._slack = SlackWatch(1.0)
-        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
         self._axis = ToolAxis()
 
     @property
@@ -197,9 +196,11 @@ class Move(Primitive):
         )
         if follows and state is not None and state.taut:
             # the tool turns along the cable as the cable turns (G's rule)
-            cable = self._cable.update(obs.time, state.direction)
-            if state.tension <= PAUSE_TENSION * self.force:
-                self._q_target = self._axis.target(me.orientation, cable)
+            _, along = self._axis.follow(
+                obs.time, me.orientation, state.direction, state.tension, self.force
+            )
+            if along is not None:
+                self._q_target = along
         desired = with_pose(self._hold, self.arm, Pose(self.target, self._q_target))
         if state is not None and self.keeps_tension:
             twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)

@@ -67,6 +67,36 @@ class ToolAxis:
         self._watching = False
         self._force: LowPass[np.ndarray] = LowPass()
         self._torque: LowPass[np.ndarray] = LowPass()
+        self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction (follow)
+
+    def follow(
+        self,
+        time: float,
+        orientation: FloatArray,
+        direction: FloatArray,
+        tension: float,
+        set_point: float,
+    ) -> tuple[float, FloatArray | None]:
+        """Turn along a taut cable: its low-passed direction, the angle to it, the orientation.
+
+        Args:
+            time: Time [s] of the sample.
+            orientation: Current tool orientation [w, x, y, z].  # (4,)
+            direction: Unit direction from the gripper towards the contact.  # (3,)
+            tension: The cable's tension [N].
+            set_point: Its set point [N].
+
+        Returns:
+            The angle [rad] between s x and the low-passed direction
+            (:meth:`angle`), and the orientation to turn to (:meth:`target`),
+            or None while the tension is above ``PAUSE_TENSION`` times the
+            set point (the turn waits).  # (4,)
+        """
+        cable = self._cable.update(time, np.asarray(direction, dtype=float))
+        angle = self.angle(orientation, cable)
+        if tension > PAUSE_TENSION * set_point:
+            return angle, None
+        return angle, self.target(orientation, cable)
 
     def observe(
         self, time: float, orientation: FloatArray, force: FloatArray, torque: FloatArray
