@@ -53,8 +53,12 @@ ALIGN_TOLERANCE = 0.003
 #: a cable whose centre passes outside a jaw's axis (2.6 mm off the slot's
 #: centre line for a 2.5 mm cable) is pushed down beside the jaws (the
 #: shipped harness's C2: 4.6 mm beside, with the gripper 3 mm off its set
-#: point and the cable 2 mm beside the tool centre point).
-ALIGN_MISS = 0.0007
+#: point and the cable 2 mm beside the tool centre point). A cable that comes
+#: in at alpha crosses the clip diagonally, 15 mm tan(alpha) to either side
+#: at its ends: at 8 deg 0.5 mm inside the jaws' axes is left to aim with (a
+#: level anchor-clip scene, 8-12 deg off: 4 of 6 seated at 0.7 mm, 10 of 10
+#: at 0.3 mm).
+ALIGN_MISS = 0.0003
 #: Longest time [s] the push waits at the table for the gripper to get down
 #: to its set point (force control along the sloping cable lags: random board
 #: 1652323633's F1 stopped 11 mm above the floor, a sixth of the drop lost).
@@ -223,8 +227,9 @@ class SingleArmClipping(Primitive):
         """Where the cable leaves its contact on the way over the clip [m].
 
         A point contact (an anchor, an estimated point): the contact
-        itself. A clip: the end of its slot towards this clip
-        (:meth:`ClipInfo.exit_towards`), where the cable leaves its jaws.
+        itself. A clip: the end of its slot away from the constrained point
+        before it (:meth:`ClipInfo.exit_towards`), where the cable leaves its
+        jaws, whichever way it turns after.
         A peg: the cable leaves it tangentially, its radius
         (the filter's estimate, else the design's peg + cable radius) beside
         the axis point the model holds, on the side it wraps it now: the
@@ -248,10 +253,27 @@ class SingleArmClipping(Primitive):
             # a clip the cable is in: it leaves by the slot's end (random
             # boards 2082005138, 2071274635, 208802845: F aimed from the
             # seat of the clip before, and the cable slid off the jaws)
-            exit_point = clip_before.exit_towards(info.position)
+            # it leaves by the end away from where it came in, whichever
+            # way it turns after (random board 914356660's W2 turns 163 deg
+            # out of F6 towards F7: aimed from the end towards F7, F pushed
+            # the cable into F7 12 mm beside its slot)
+            came = None if i is None else est.point_before(i)
+            away = (
+                info.position
+                if came is None
+                else 2.0 * clip_before.position - np.asarray(came.position, dtype=float)
+            )
+            exit_point = clip_before.exit_towards(away)
             self._lead = norm3(exit_point - clip_before.position)  # cable in its jaws [m]
             return exit_point
         if label not in est.round_fixtures:
+            if label in ctx.fixtures and ctx.graph.points[i].kind == "fixed":  # type: ignore[index]
+                # an anchor holds the cable's end at a point, free to turn:
+                # its line passes through it, and the measured line would add
+                # only its own error (a level 7 deg anchor-clip scene: shifted
+                # 3.9 mm, the cable went down 1.6 mm beside the seat, its
+                # entry end beyond a jaw's axis, and slid off)
+                self._shifts = False
             return c
         # a peg's leave point is its tangent at the estimated radius; the
         # measured line (the wrench's line of action, good to 6-9 mm) adds
