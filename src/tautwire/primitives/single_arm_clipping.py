@@ -438,6 +438,7 @@ class SingleArmClipping(Primitive):
             self._tug.update(obs.time, wrench.force)
         force = self._base_force
         if self.phase == "align":
+            force = self.force  # the push's tension (see _target)
             target = self._target(obs, state)
             if self._aligned(me.position, target):
                 self.phase, self._since = "push", obs.time
