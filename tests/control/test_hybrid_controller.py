@@ -229,3 +229,37 @@ def test_coordinated_force_control_acts_on_the_distance_only() -> None:
     assert np.allclose(v_left - v_right, [0.0, speed, 0.0])  # the grippers part
     slide = ctrl.coordinated(current, coordinated_pose(current), None, 0.0, relative_speed=0.02)
     assert np.allclose(slide[0:3] - slide[6:9], [0.0, 0.02, 0.0])
+
+
+@settings(max_examples=100, deadline=None)
+@given(
+    st.floats(-np.pi, np.pi),
+    st.floats(0.05, 0.5),
+    st.floats(0.0, 12.0),
+    st.floats(0.1, 0.2),
+)
+def test_a_coordinated_move_at_the_speed_limit_keeps_the_distance_under_force_control(
+    heading: float, travel: float, tension: float, span: float
+) -> None:
+    # random board 1652323633's C: both grippers carried 111 mm to the clip
+    # at the speed limit; scaled arm by arm, the absolute velocity leaked into
+    # their distance (2 mm, 3 -> 13.6 N against a set point of 3 N)
+    limits = SafetyLimits(20.0, max_linear_speed=0.1, max_angular_speed=1.0)
+    ctrl = HybridController(
+        MotionController(), AdaptiveForceController(bandwidth=5.0), limits=limits
+    )
+    q = np.array([1.0, 0.0, 0.0, 0.0])
+    u = np.array([np.cos(heading), np.sin(heading), 0.0])
+    mid = np.array([0.4, -0.2, 0.09])
+    current = DualPose(Pose(mid + 0.5 * span * u, q), Pose(mid - 0.5 * span * u, q))
+    goal = coordinated_pose(current)
+    away = np.array([np.cos(heading + 1.1), np.sin(heading + 1.1), 0.05])
+    desired = type(goal)(Pose(mid + travel * away, q), goal.relative)
+    twist = ctrl.coordinated(current, desired, 3.0, tension, 5000.0)
+    v_left, v_right = twist[0:3], twist[6:9]
+    assert np.linalg.norm(v_left) <= 0.1 + 1e-9 and np.linalg.norm(v_right) <= 0.1 + 1e-9
+    # the distance's rate is the force controller's, whatever the absolute move
+    rate = float(u @ (v_left - v_right))
+    assert rate == pytest.approx(ctrl.force.speed(3.0, tension, 5000.0), abs=1e-9)
+    # and the grippers still move towards the goal
+    assert float((v_left + v_right) @ away) > 0.0

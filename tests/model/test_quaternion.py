@@ -153,3 +153,46 @@ def test_log_of_a_tiny_rotation_and_of_nothing() -> None:
     q = (np.cos(1e-8), np.sin(1e-8), 0.0, 0.0)
     np.testing.assert_allclose(qf.log_floats(q), [2e-8, 0.0, 0.0], rtol=1e-9)
     assert qf.log_floats((0.0, 0.0, 0.0, 0.0)) == (0.0, 0.0, 0.0)
+
+
+@given(
+    st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3),
+    st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3),
+    st.booleans(),
+)
+@settings(max_examples=200, deadline=None)
+def test_turn_x_onto_level_lays_x_along_and_y_level(
+    v: list[float], d: list[float], down: bool
+) -> None:
+    direction = np.array(d)
+    if np.linalg.norm(direction) < 1e-3 or np.hypot(d[0], d[1]) < 0.01 * np.linalg.norm(direction):
+        return  # no level y about a (nearly) vertical x
+    q0 = Rotation.from_rotvec(0.3 * np.array(v)).as_quat(scalar_first=True)
+    if down:  # a grasp whose tool z points down
+        q0 = qf.multiply(q0, [0.0, 1.0, 0.0, 0.0])
+    q = qf.turn_x_onto_level(q0, direction)
+    assert np.linalg.norm(q) == pytest.approx(1.0)
+    assert np.allclose(qf.rotate(q, [1.0, 0.0, 0.0]), direction / np.linalg.norm(direction))
+    assert abs(qf.rotate(q, [0.0, 1.0, 0.0])[2]) < 1e-9
+    # only a roll about x follows the shortest arc, and z stays on the side
+    # of the horizontal plane the arc leaves it on (the nearer level pose)
+    arc = qf.turn_x_onto(q0, direction)
+    z_arc, z = qf.rotate(arc, [0.0, 0.0, 1.0]), qf.rotate(q, [0.0, 0.0, 1.0])
+    assert z[2] * z_arc[2] >= 0.0
+    assert z @ z_arc >= -1e-9
+
+
+@pytest.mark.parametrize("slope_deg", [-20.0, -40.0])
+def test_following_a_cone_keeps_the_tool_level_where_the_shortest_arc_rolls(
+    slope_deg: float,
+) -> None:
+    # a gripper that winds a cable 670 deg round a peg it slopes down to
+    slope = np.radians(slope_deg)
+    q_arc = q_level = np.array([1.0, 0.0, 0.0, 0.0])
+    for a in np.radians(np.arange(0.0, 670.0, 0.25)):
+        d = np.array([np.cos(slope) * np.cos(a), np.cos(slope) * np.sin(a), np.sin(slope)])
+        q_arc = qf.turn_x_onto(q_arc, d)
+        q_level = qf.turn_x_onto_level(q_level, d)
+    assert abs(qf.rotate(q_level, [0.0, 1.0, 0.0])[2]) < 1e-9
+    # the shortest arc alone has rolled the tool's y-axis far off level
+    assert abs(qf.rotate(q_arc, [0.0, 1.0, 0.0])[2]) > np.sin(np.radians(30.0))

@@ -289,8 +289,44 @@ def turn_x_onto(q: ArrayLike, direction: ArrayLike) -> FloatArray:
     return multiply(shortest_arc(rotate(q, [1.0, 0.0, 0.0]), direction), q)
 
 
+def turn_x_onto_level(q: ArrayLike, direction: ArrayLike) -> FloatArray:
+    """``q`` turned so that its x-axis lies along ``direction`` and its y-axis is level.
+
+    :func:`turn_x_onto` applied period after period while the direction
+    sweeps a cone (a cable that slopes down to a peg the gripper winds it
+    round) adds a roll about x of the cone's solid angle per turn: random
+    board 1652323633's I, 670 deg round a peg, left the tool z-axis 62 deg
+    from vertical, and C later rolled it back with the cable in the fingers
+    (13.6 N). Here the shortest arc is followed by the roll about the new x
+    that lays y horizontal, z staying on the side of the horizontal plane it
+    is on (the grasp's own up or down).
+
+    Args:
+        q: Current orientation [w, x, y, z].  # (4,)
+        direction: Desired direction of the x-axis (any length).  # (3,)
+
+    Returns:
+        The turned orientation [w, x, y, z]; the shortest arc alone where
+        ``direction`` is within 0.1 deg of vertical (no level y there).  # (4,)
+    """
+    turned = turn_x_onto(q, direction)
+    x = rotate(turned, [1.0, 0.0, 0.0])
+    y = rotate(turned, [0.0, 1.0, 0.0])
+    up = 1.0 if float(rotate(turned, [0.0, 0.0, 1.0])[2]) >= 0.0 else -1.0
+    level = np.array([-up * float(x[1]), up * float(x[0]), 0.0])  # up e_z cross x
+    size = norm3(level)
+    if size < 2e-3:
+        return turned
+    level /= size
+    roll = math.atan2(float(cross3(y, level) @ x), float(y @ level))
+    half = 0.5 * roll
+    about_x = np.array([math.cos(half), *(math.sin(half) * x)])
+    out = multiply(about_x, turned)
+    return out
+
+
 def turn_x_onto_line(q: ArrayLike, direction: ArrayLike) -> FloatArray:
-    """``q`` turned by the shortest arc that lays its x-axis along the line of ``direction``.
+    """``q`` turned to lay its x-axis along the line of ``direction``, its y-axis level.
 
     A parallel gripper holds a cable between its fingers along its tool
     x-axis, and it holds it as well with +x as with -x along the cable:
@@ -308,4 +344,4 @@ def turn_x_onto_line(q: ArrayLike, direction: ArrayLike) -> FloatArray:
     d = np.asarray(direction, dtype=float).reshape(3)
     if float(rotate(q, [1.0, 0.0, 0.0]) @ d) < 0.0:
         d = -d
-    return turn_x_onto(q, d)
+    return turn_x_onto_level(q, d)
