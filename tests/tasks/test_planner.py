@@ -639,3 +639,33 @@ def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first(
     board = (*(f for f in BOARD if f.name != "C2"), aside)
     p = plan_routes(RouteProblem(board, (w1, busy), ROBOT))
     assert not any(s.why.startswith("lift the cable clear") for s in p.steps)
+
+
+def test_c_after_a_clip_keeps_cable_for_the_near_span_to_turn_out_of_its_slot(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The cable leaves C1's jaws straight along its slot and bends beyond them.
+
+    C into CT then holds its near gripper 48 deg off C1's slot: the near
+    span needs ``BEND_SLACK`` (1 - cos 48 deg) more than its straight length
+    and ``NEAR_SLACK`` (random board 1652323633's C into F7, 75 deg off F6's
+    slot: taut on the way over F7, 13.6 N).
+    """
+    turn = BoardFixture("CT", "clip", (0.40, 0.19, 0.08), yaw=1.45, push_force=2.5, length=0.03)
+    board = (*BOARD, turn)
+    w1 = cable("W1", [RouteEntry("C1"), RouteEntry("CT")], length=0.9, holds=(("left", 0.40),))
+
+    def near_grasp(bend_slack: float) -> float:
+        monkeypatch.setattr(planner, "BEND_SLACK", bend_slack)
+        p = plan_routes(RouteProblem(board, (w1,), ROBOT))
+        steps = [s.primitive for s in p.steps]
+        c = len(steps) - 1 - steps[::-1].index("parallel_clipping")
+        return float(p.steps[c - 1].params["at"])  # type: ignore[arg-type]
+
+    exit_c1 = np.array([0.365, 0.10])  # C1's slot runs along x, away from A1
+    slot = np.array([math.cos(1.45), math.sin(1.45)])
+    near = np.array([0.40, 0.19]) - 0.5 * SPAN * slot
+    way = (near - exit_c1) / np.linalg.norm(near - exit_c1)
+    bend = 1.0 - float(way @ np.array([1.0, 0.0]))
+    assert math.degrees(math.acos(1.0 - bend)) == pytest.approx(48.0, abs=1.0)
+    assert near_grasp(0.02) - near_grasp(0.0) == pytest.approx(0.02 * bend, abs=2e-4)

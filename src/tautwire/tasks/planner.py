@@ -145,6 +145,12 @@ GRASP_MARGIN = 0.04
 #: Cable [m] beyond its straight length that C's near span keeps when the
 #: cable snaps in (see ``_Planner.parallel_half_span``).
 NEAR_SLACK = 0.010
+#: Cable [m] a right-angle turn out of the last clip's slot costs C's near
+#: span (a turn theta costs 1 - cos theta of it): the cable leaves the jaws
+#: straight and bends beyond them. Random board 1652323633's C into F7: the
+#: near span left F6 75 deg off its slot, and with ``NEAR_SLACK`` alone it
+#: went taut on the way over F7 (13.6 N).
+BEND_SLACK = 0.020
 #: Half the widest distance [m] between C's grippers: a gripper holding more
 #: cable hands it over nearer first (random board 1808415002: 139 mm, the
 #: near gripper grasped 40 mm from the anchor, and C pulled 28 N).
@@ -1521,12 +1527,18 @@ class _Planner:
         The straight distance from the fixed point to where that gripper
         is when the cable snaps in (``half`` [m] before the seat along the
         slot, bent down by ``snap`` [rad] from the jaws' top), plus
-        ``NEAR_SLACK``; at least ``GRASP_MARGIN``.
+        ``NEAR_SLACK``, plus ``BEND_SLACK`` for its turn out of the last
+        clip's slot; at least ``GRASP_MARGIN``.
         """
         near = seat - half * slot
         near[2] = float(seat[2]) + JAW_TOP - half * math.tan(snap)
         straight = float(np.linalg.norm(near - cable.contact))
-        return max(straight + NEAR_SLACK, GRASP_MARGIN)
+        bend = 0.0
+        last = None if cable.last is None else self.fixtures.get(cable.last)
+        if last is not None and last.kind == "clip":  # out of the last clip's slot
+            way = _unit(_flat(near - cable.contact))
+            bend = 1.0 - float(way @ _unit(_flat(cable.contact - _vec(last.position))))
+        return max(straight + NEAR_SLACK + BEND_SLACK * bend, GRASP_MARGIN)
 
     def parallel_half_span(
         self, cable: _Cable, seat: FloatArray, slot: FloatArray, snap: float
