@@ -296,10 +296,10 @@ def turn_x_onto_level(q: ArrayLike, direction: ArrayLike) -> FloatArray:
     sweeps a cone (a cable that slopes down to a peg the gripper winds it
     round) adds a roll about x of the cone's solid angle per turn: random
     board 1652323633's I, 670 deg round a peg, left the tool z-axis 62 deg
-    from vertical, and C later rolled it back with the cable in the fingers
-    (13.6 N). Here the shortest arc is followed by the roll about the new x
-    that lays y horizontal, z staying on the side of the horizontal plane it
-    is on (the grasp's own up or down).
+    from vertical, and H then grasped the other cable with that roll. Here
+    the shortest arc is followed by the roll about the new x that lays y
+    horizontal, z staying on the side of the horizontal plane it is on (the
+    grasp's own up or down): how H lays a new grasp (:func:`turn_x_onto_line`).
 
     Args:
         q: Current orientation [w, x, y, z].  # (4,)

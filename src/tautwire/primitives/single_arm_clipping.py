@@ -177,6 +177,7 @@ class SingleArmClipping(Primitive):
         self._no_snap = ""  # what the push read when it found no snap down to its bottom
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         self._shifts = True  # the far contact moves onto the measured line (not from a peg)
+        self._bent_exit = False  # the cable bends out of a clip: align at the push's tension
         self._swing = SlotSwing(0.0, JAW_TOP)  # onto the slot once on the jaws (set at the push)
         self._on_line = np.zeros(3)  # over the exit on the aimed line (set at the push) [m]
         if info is None:
@@ -264,6 +265,12 @@ class SingleArmClipping(Primitive):
                 else 2.0 * clip_before.position - np.asarray(came.position, dtype=float)
             )
             exit_point = clip_before.exit_towards(away)
+            # its bend beyond the jaws tightens as the tension rises, which
+            # moves the straight span's line: F aligns at the push's tension
+            # (random board 303464894's F5, 58 deg on from F4: aligned at 3 N
+            # over the seat, the push's 7.5 N moved the cable 3 mm aside
+            # before it reached the jaws, and it slid off)
+            self._bent_exit = True
             self._lead = norm3(exit_point - clip_before.position)  # cable in its jaws [m]
             return exit_point
         if label not in est.round_fixtures:
@@ -438,7 +445,8 @@ class SingleArmClipping(Primitive):
             self._tug.update(obs.time, wrench.force)
         force = self._base_force
         if self.phase == "align":
-            force = self.force  # the push's tension (see _target)
+            if self._bent_exit:  # the line from a clip moves with the tension
+                force = self.force
             target = self._target(obs, state)
             if self._aligned(me.position, target):
                 self.phase, self._since = "push", obs.time

@@ -36,7 +36,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.estimation.force_line import line_offset
-from tautwire.model.quaternion import rotate, turn_x_onto_level
+from tautwire.model.quaternion import rotate, turn_x_onto
 from tautwire.primitives.low_pass import LowPass
 
 FloatArray = NDArray[np.float64]
@@ -149,11 +149,13 @@ class ToolAxis:
         return self.sign
 
     def target(self, orientation: FloatArray, direction: FloatArray) -> FloatArray:
-        """The orientation [w, x, y, z] that lays s x along the cable, its y-axis level.
+        """The orientation [w, x, y, z] turned by the shortest arc that lays s x along the cable.
 
-        The shortest arc, then the roll about x that lays y horizontal
-        (:func:`~tautwire.model.quaternion.turn_x_onto_level`): followed round
-        a peg, the shortest arc alone rolls the tool by the cone's solid angle.
+        Followed round a peg (I), the shortest arc rolls the tool by the
+        cone's solid angle (random board 1652323633: 62 deg after 670 deg).
+        Laying y level there too (:func:`~tautwire.model.quaternion.turn_x_onto_level`)
+        made random board 360400295's F3 after I push the cable 7 mm beside
+        its slot (not traced), so the grasp keeps its roll.
 
         While an observing primitive has not decided the sign, ``orientation``
         itself (no turn yet).
@@ -165,7 +167,7 @@ class ToolAxis:
         if self.sign is None and self._watching:
             return np.asarray(orientation, dtype=float).copy()
         s = self.decide(orientation, direction)
-        return turn_x_onto_level(orientation, s * np.asarray(direction, dtype=float))
+        return turn_x_onto(orientation, s * np.asarray(direction, dtype=float))
 
     def angle(self, orientation: FloatArray, direction: FloatArray) -> float:
         """Angle [rad] between s x and the cable's direction towards the contact.
