@@ -652,7 +652,7 @@ def test_c_after_a_clip_keeps_cable_for_the_near_span_to_turn_out_of_its_slot(
     slot: taut on the way over F7, 13.6 N).
     """
     turn = BoardFixture("CT", "clip", (0.40, 0.19, 0.08), yaw=1.45, push_force=2.5, length=0.03)
-    board = (*BOARD, turn)
+    board = (*(f for f in BOARD if f.name != "C2"), turn)  # C2: in C's way over CT
     w1 = cable("W1", [RouteEntry("C1"), RouteEntry("CT")], length=0.9, holds=(("left", 0.40),))
 
     def near_grasp(bend_slack: float) -> float:
@@ -669,3 +669,17 @@ def test_c_after_a_clip_keeps_cable_for_the_near_span_to_turn_out_of_its_slot(
     bend = 1.0 - float(way @ np.array([1.0, 0.0]))
     assert math.degrees(math.acos(1.0 - bend)) == pytest.approx(48.0, abs=1.0)
     assert near_grasp(0.02) - near_grasp(0.0) == pytest.approx(0.02 * bend, abs=2e-4)
+
+
+@pytest.mark.parametrize("y", [0.33, 0.36])
+def test_c_is_refused_where_its_grippers_would_run_into_a_peg_on_the_way(y: float) -> None:
+    """C carries both grippers to either side of the seat, 15 mm over it: a peg there is hit.
+
+    Random board 1652323633's C into F7 carried the far gripper's tail into
+    peg F8 (66 N); the planner names the peg instead.
+    """
+    peg = BoardFixture("PX", "peg", (0.262, y, 0.05), radius=0.006, height=0.06)
+    w1 = cable("W1", [RouteEntry("C5")])
+    plan(w1)  # without the peg, C5 is planned
+    with pytest.raises(RouteError, match=r"C's grippers, carried over C5, would run into PX"):
+        plan_routes(RouteProblem((*BOARD, peg), (w1,), ROBOT))

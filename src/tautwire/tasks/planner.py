@@ -55,6 +55,7 @@ from tautwire.primitives.clip_sensing import (
     PivotPress,
     push_tension,
 )
+from tautwire.primitives.parallel_clipping import ABOVE as PARALLEL_ABOVE
 from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
 from tautwire.primitives.single_arm_clipping import (
     ABOVE,
@@ -1495,6 +1496,7 @@ class _Planner:
                 "it in",
             )
         grasp = cable.at - 2.0 * half
+        self.require_clear_pair(cable, clip, slot, half, grasp)
         self.emit(
             cable, "grasp_tensioned", "grasp the cable with the other gripper", arm=other, at=grasp
         )
@@ -1518,6 +1520,48 @@ class _Planner:
             arm=cable.arm,
             force=self.problem.tension,
         )
+
+    def require_clear_pair(
+        self, cable: _Cable, clip: BoardFixture, slot: FloatArray, half: float, grasp: float
+    ) -> None:
+        """Fail where C's grippers, carried over the clip, would run into a fixture.
+
+        Both grippers go straight from where they hold the taut cable (the
+        far one at the cable's gripper, the near one ``grasp`` along the
+        line from the last fixed point), no higher than they end, to ``half``
+        either side of the seat, ``ABOVE`` over it; the free tail runs on
+        beyond the far gripper.
+        Random board 1652323633's C into F7 carried the far gripper's tail
+        into peg F8 (66 N).
+        """
+        seat = _vec(clip.position)
+        lift = np.array([0.0, 0.0, PARALLEL_ABOVE])
+        line = cable.gripper - cable.contact
+        near0 = cable.contact + line * (grasp - cable.s_contact) / max(cable.free, 1e-9)
+        far0 = cable.gripper
+        near1, far1 = seat - half * slot + lift, seat + half * slot + lift
+        # the slide and the pull before C can leave the grippers lower than
+        # planned (board 1652323633's far gripper: planned at 0.147 m, at
+        # 0.091 m when C began): they are checked no higher than C holds them
+        far0 = np.append(far0[:2], min(float(far0[2]), float(far1[2])))
+        near0 = np.append(near0[:2], min(float(near0[2]), float(near1[2])))
+        skip = self.overlapping(
+            frozenset(n for n in (clip.name, cable.last, cable.fixture) if n is not None)
+        )
+        for k in range(1, 9):
+            near = near0 + (near1 - near0) * (k / 8.0)
+            far = far0 + (far1 - far0) * (k / 8.0)
+            hit = gripper_collision(near, self.problem.fixtures, skip) or gripper_collision(
+                far, self.problem.fixtures, skip
+            )
+            if hit is None:
+                hit = tail_collision(far, near, self.problem.fixtures, cable.spec.radius, skip)
+            if hit is not None:
+                raise self.fail(
+                    cable,
+                    f"C's grippers, carried over {clip.name}, would run into {hit.fixture} "
+                    f"({hit.by} at z = {hit.height:.3f} m, below {hit.needed:.3f} m)",
+                )
 
     def near_arc(
         self, cable: _Cable, seat: FloatArray, slot: FloatArray, half: float, snap: float
