@@ -89,7 +89,9 @@ class SingleArmClipping(Primitive):
     (on the force's line of action, :meth:`_target`) goes onto the line,
     which runs from c moved across onto the measured pull's line
     (:meth:`_measured_shift`: a stiff cable bent at c leaves it beside c;
-    not from a peg, whose tangent leave point the model places),
+    not from a peg, whose tangent leave point the model places, nor from an
+    anchor, which the cable turns about at a known point; from a clip the
+    alignment runs at the push's tension, as the bend there tightens with it),
     and the push starts once the line passes within ``ALIGN_MISS`` of the
     seat (:meth:`_aligned`); then it pivots down about the clip's
     exit at ``PUSH_RATE`` (turning about it onto the slot's axis once the
