@@ -23,6 +23,7 @@ from typing import Any
 import numpy as np
 
 from tautwire.errors import InvalidArgumentError, TautwireError
+from tautwire.model.vector3 import nearest_on_segment
 from tautwire.scenario import Scenario
 from tautwire.scenario.loader import scenario_from_data
 from tautwire.scenario.route_problem import plan_scenario
@@ -81,9 +82,8 @@ class DrawnBoard:
 
 def _off_span(point: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
     """Horizontal distance [m] of ``point`` from the segment ``a`` -> ``b``."""
-    ab = (b - a)[:2]
-    t = float(np.clip(float((point - a)[:2] @ ab) / max(float(ab @ ab), 1e-12), 0.0, 1.0))
-    return float(np.linalg.norm((point - a)[:2] - t * ab))
+    flat = point[:2]
+    return float(np.linalg.norm(flat - nearest_on_segment(flat, a[:2], b[:2])))
 
 
 def _route(

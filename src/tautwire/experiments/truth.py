@@ -79,6 +79,7 @@ from numpy.typing import NDArray
 
 from tautwire.model import PathGraph
 from tautwire.model.sag_length import sag_excess_length
+from tautwire.model.vector3 import nearest_on_segment
 from tautwire.primitives import PrimitiveContext
 from tautwire.robot import Arm
 from tautwire.sim.ground_truth import GroundTruth, TautSpan, closest_on_polyline
@@ -387,7 +388,7 @@ def _check(
         # the slot's end the cable leaves by)
         seat = truth.seat(name, cable)
         entry = seat + (seat - t)
-        t = _nearest_on_segment(entry, t, pt.position)
+        t = nearest_on_segment(pt.position, entry, t)
     elif truth.fixture_type(name) == "peg":
         # a peg holds the cable over a band of heights (a winding climbs it):
         # its axis point there nearest the estimate
@@ -406,15 +407,6 @@ def _check(
         std,
         trusted,
     )
-
-
-def _nearest_on_segment(a: FloatArray, b: FloatArray, p: FloatArray) -> FloatArray:
-    """The point of the segment from ``a`` to ``b`` nearest ``p`` [m]."""
-    ab = b - a
-    n2 = float(ab @ ab)
-    t = 0.0 if n2 < 1e-18 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
-    out: FloatArray = a + t * ab
-    return out
 
 
 def judge_model(checks: list[ContactCheck]) -> TruthCheck:

@@ -26,3 +26,24 @@ def norm3(a: ArrayLike) -> float:
     """Euclidean norm of a 3-vector."""
     x, y, z = np.asarray(a, dtype=float).reshape(3).tolist()
     return math.sqrt(x * x + y * y + z * z)
+
+
+def nearest_on_segment(p: ArrayLike, a: ArrayLike, b: ArrayLike) -> FloatArray:
+    """The point of the segment from ``a`` to ``b`` nearest ``p`` (any dimension).
+
+    Args:
+        p: The point.  # (n,)
+        a: The segment's start.  # (n,)
+        b: The segment's end.  # (n,)
+
+    Returns:
+        The nearest point; ``a`` for a segment shorter than 1e-9 (units of
+        the inputs).  # (n,)
+    """
+    pa = np.asarray(p, dtype=float)
+    aa = np.asarray(a, dtype=float)
+    ab = np.asarray(b, dtype=float) - aa
+    n2 = float(ab @ ab)
+    t = 0.0 if n2 < 1e-18 else min(1.0, max(0.0, float((pa - aa) @ ab) / n2))
+    out: FloatArray = aa + t * ab
+    return out

@@ -50,7 +50,7 @@ from tautwire.estimation.round_contact import (
 from tautwire.model import FeaturePoint, PathGraph
 from tautwire.model.sag_length import sag_excess_length
 from tautwire.model.tension import G as GRAVITY_ABS
-from tautwire.model.vector3 import cross3, norm3
+from tautwire.model.vector3 import cross3, nearest_on_segment, norm3
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.peg_leave import nearest_turn
 from tautwire.robot import Arm, Observation
@@ -204,14 +204,6 @@ class ContactEstimate(NamedTuple):
     covariance: FloatArray
     radius: float | None
     trusted: bool
-
-
-def _nearest_on_segment(x: FloatArray, a: FloatArray, b: FloatArray) -> FloatArray:
-    """The point [m] of the segment from ``a`` to ``b`` nearest ``x``."""
-    ab = b - a
-    t = float(np.clip((x - a) @ ab / max(float(ab @ ab), 1e-18), 0.0, 1.0))
-    out: FloatArray = a + t * ab
-    return out
 
 
 class ModelInconsistentError(TautwireError):
@@ -1432,7 +1424,7 @@ class ModelEstimator:
             if peg <= 0.0:
                 return None
         else:
-            nearest = _nearest_on_segment(x, h.start, h.end)
+            nearest = nearest_on_segment(x, h.start, h.end)
             aside = norm3(x - nearest)
             n = (x - nearest) / max(aside, 1e-12)
             if aside > SEGMENT_TOLERANCE + 3.0 * math.sqrt(float(n @ P @ n)) + peg:

@@ -48,6 +48,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import TautwireError
+from tautwire.model.vector3 import nearest_on_segment
 from tautwire.primitives.clip_sensing import (
     JAW_TOP,
     MAX_FAR_RISE,
@@ -505,14 +506,6 @@ def tail_collision(
     if hit is None:
         return None
     return Collision(hit.fixture, hit.height, hit.needed, "cable's free tail")
-
-
-def _segment_distance(p: FloatArray, a: FloatArray, b: FloatArray) -> float:
-    """Distance [m] from ``p`` to the segment from ``a`` to ``b``."""
-    ab = b - a
-    n2 = float(ab @ ab)
-    t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
-    return float(np.linalg.norm(a + t * ab - p))
 
 
 @dataclass(frozen=True)
@@ -1061,7 +1054,9 @@ class _Planner:
             pivot[2] = z_pass
             around = self.overlapping(frozenset({peg.name}))
             for point in wind:
-                gap = _segment_distance(_flat(point), _flat(c), _flat(_vec(peg.position)))
+                flat = _flat(point)
+                span = nearest_on_segment(flat, _flat(c), _flat(_vec(peg.position)))
+                gap = float(np.linalg.norm(flat - span))
                 if gap < FINGER_CLEARANCE and z_grip < float(c[2]) + FINGER_CLEARANCE:
                     collision = Collision(OWN_SPAN, z_grip, float(c[2]) + FINGER_CLEARANCE)
                     what = "winding round the peg"
