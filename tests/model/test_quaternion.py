@@ -167,7 +167,7 @@ def test_turn_x_onto_level_lays_x_along_and_y_level(
     direction = np.array(d)
     if np.linalg.norm(direction) < 1e-3 or np.hypot(d[0], d[1]) < 0.01 * np.linalg.norm(direction):
         return  # no level y about a (nearly) vertical x
-    q0 = Rotation.from_rotvec(0.3 * np.array(v)).as_quat(scalar_first=True)
+    q0 = qf.from_rotation(Rotation.from_rotvec(0.3 * np.array(v)))
     if down:  # a grasp whose tool z points down
         q0 = qf.multiply(q0, [0.0, 1.0, 0.0, 0.0])
     q = qf.turn_x_onto_level(q0, direction)
