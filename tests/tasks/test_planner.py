@@ -189,15 +189,21 @@ def test_mirrored_board_mirrors_the_plan(wind: int, side: str) -> None:
     other = "right" if side == "left" else "left"
     route = [RouteEntry("P1", side, wind), RouteEntry("C1")]  # type: ignore[arg-type]
     mirror_route = [RouteEntry("P1", other, wind), RouteEntry("C1")]  # type: ignore[arg-type]
-    a = plan_routes(RouteProblem(BOARD, (cable("W", route),), ROBOT))
+    problem = RouteProblem(BOARD, (cable("W", route),), ROBOT)
     # ROBOT's grippers are mirror images: the right one takes the left one's part
-    b = plan_routes(
-        RouteProblem(
-            tuple(mirrored(f) for f in BOARD),
-            (cable("W", mirror_route, holds=(("right", 0.35),)),),
-            ROBOT,
-        )
+    mirror = RouteProblem(
+        tuple(mirrored(f) for f in BOARD),
+        (cable("W", mirror_route, holds=(("right", 0.35),)),),
+        ROBOT,
     )
+    try:
+        a = plan_routes(problem)
+    except RouteError as refused:  # the mirror image is refused for the same reason
+        with pytest.raises(RouteError) as info:
+            plan_routes(mirror)
+        assert info.value.reason == refused.reason
+        return
+    b = plan_routes(mirror)
     assert names(a) == names(b)
     for sa, sb in zip(a.steps, b.steps, strict=True):
         if sa.primitive == "rotate_around_feature_point":
@@ -290,6 +296,20 @@ def test_out_of_reach() -> None:
     err = error_of(cable("W1", [RouteEntry("C1"), RouteEntry("EDGE", "left", 1)], length=1.4))
     assert (err.cable, err.entry, err.fixture) == ("W1", 2, "EDGE")
     assert "out of reach" in err.reason
+
+
+def test_a_winding_keeps_room_on_the_peg_for_its_climb_over_its_own_strand() -> None:
+    # a 16 mm peg catches the cable (5.5 mm of room between foot and top), but
+    # a whole turn lies on its own strand and climbs over it by about
+    # one and a half (8 mm): random board 208802845's W2 slipped off F4's top that way
+    low = BoardFixture("P1", "peg", (0.20, 0.125, 0.05), radius=0.006, height=0.016)
+    board = (BOARD[0], low)
+    caught = plan_routes(RouteProblem(board, (cable("W1", [RouteEntry("P1", "left")]),), ROBOT))
+    assert "move" in names(caught)
+    with pytest.raises(RouteError) as info:
+        plan_routes(RouteProblem(board, (cable("W1", [RouteEntry("P1", "left", 1)]),), ROBOT))
+    assert info.value.fixture == "P1"
+    assert "too low to wind" in info.value.reason and "8 mm" in info.value.reason
 
 
 def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:

@@ -172,6 +172,15 @@ DIGITS = 4
 CLEARANCE = 0.005
 #: Steps [m] by which the height at which the cable passes a peg is raised to clear fixtures.
 PASS_STEP = 0.005
+#: Turn short of a whole turn [rad] from which a winding lies on its own
+#: incoming strand at the peg: the two tangents then cross within about a
+#: cable's diameter of the peg's surface.
+CROSS_MARGIN = math.radians(45.0)
+#: Climb [cable diameters] of a winding where it crosses its own strand on a
+#: peg (random board 208802845: W2 wound 356 deg round F4, caught at 98-100
+#: mm, lay on 101-107 mm past the crossing, reached the top at 110 mm and
+#: slipped off it).
+CROSS_CLIMB = 1.5
 
 
 class RouteError(TautwireError):
@@ -868,6 +877,16 @@ class _Planner:
             raise self.fail(
                 cable, f"the peg is {peg.height:.3f} m high, too low to catch the cable"
             )
+        crossings = max(0, math.ceil((turn + CROSS_MARGIN - 2.0 * math.pi) / (2.0 * math.pi)))
+        climb = crossings * CROSS_CLIMB * 2.0 * cable.spec.radius
+        hi -= climb
+        if lo > hi:
+            raise self.fail(
+                cable,
+                f"the peg is {peg.height:.3f} m high, too low to wind the cable "
+                f"{math.degrees(turn):.0f} deg round it (it climbs {climb * 1e3:.0f} mm "
+                f"over its own strand)",
+            )
         c = cable.contact
         # the lowest pass height (from the cable's own height up) whose sweep and
         # winding keep the cable over every other fixture
@@ -886,11 +905,12 @@ class _Planner:
             )
         if motion.collision is not None:
             hit = motion.collision
+            why = f" ({climb * 1e3:.0f} mm lower, for the winding's climb over its own strand)"
             raise self.fail(
                 cable,
                 f"{motion.what} takes the {hit.by} into {hit.fixture}: it passes at z = "
                 f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m, and the "
-                f"cable cannot pass the peg higher than z = {hi:.3f} m",
+                f"cable cannot pass the peg higher than z = {hi:.3f} m" + (why if climb else ""),
             )
         last = self.fixtures.get(cable.last) if cable.last else None
         if last is not None and last.kind == "clip":
