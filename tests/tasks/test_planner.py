@@ -201,7 +201,9 @@ def test_mirrored_board_mirrors_the_plan(wind: int, side: str) -> None:
     except RouteError as refused:  # the mirror image is refused for the same reason
         with pytest.raises(RouteError) as info:
             plan_routes(mirror)
-        assert info.value.reason == refused.reason
+        swap = {"left": "right", "right": "left"}
+        words = refused.reason.split(" ")
+        assert info.value.reason == " ".join(swap.get(w, w) for w in words)
         return
     b = plan_routes(mirror)
     assert names(a) == names(b)
@@ -310,6 +312,23 @@ def test_a_winding_keeps_room_on_the_peg_for_its_climb_over_its_own_strand() -> 
         plan_routes(RouteProblem(board, (cable("W1", [RouteEntry("P1", "left", 1)]),), ROBOT))
     assert info.value.fixture == "P1"
     assert "too low to wind" in info.value.reason and "8 mm" in info.value.reason
+
+
+def test_a_winding_keeps_the_cable_clear_of_the_other_gripper() -> None:
+    # random board 1652323633: W1's winding round F1 swept the cable into the
+    # right gripper, which held W2 2 cm under the cable's line: the cable
+    # caught on its fingers and I stalled there
+    route = [RouteEntry("P1", "left", 1)]
+    away = replace(ROBOT, grippers={"left": (0.30, 0.20, 0.10), "right": (0.30, -0.20, 0.10)})
+    assert "rotate_around_feature_point" in names(
+        plan_routes(RouteProblem(BOARD, (cable("W1", route),), away))
+    )
+    for parked in ((0.20, -0.05, 0.10), (0.15, -0.05, 0.10)):
+        robot = replace(ROBOT, grippers={"left": (0.30, 0.20, 0.10), "right": parked})
+        with pytest.raises(RouteError) as info:
+            plan_routes(RouteProblem(BOARD, (cable("W1", route),), robot))
+        assert info.value.fixture == "P1"
+        assert "winding round the peg takes the cable into the right gripper" in info.value.reason
 
 
 def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:

@@ -172,6 +172,14 @@ DIGITS = 4
 CLEARANCE = 0.005
 #: Steps [m] by which the height at which the cable passes a peg is raised to clear fixtures.
 PASS_STEP = 0.005
+#: Horizontal reach [m] of a parked gripper's open fingers (pads 20 mm
+#: either side of the tool centre point, 6 mm thick, 20 mm long) with the
+#: cable's radius and room to spare: a taut cable swept closer catches on
+#: them (random board 1652323633: W1's winding round F1 swept the cable
+#: into the right gripper, parked holding W2 2 cm under the cable's line).
+PARKED_REACH = 0.045
+#: Depth [m] of a gripper's finger pads below its tool centre point.
+PAD_DEPTH = 0.008
 #: Turn short of a whole turn [rad] from which a winding lies on its own
 #: incoming strand at the peg: the two tangents then cross within about a
 #: cable's diameter of the peg's surface.
@@ -517,6 +525,31 @@ def tail_collision(
     return Collision(hit.fixture, hit.height, hit.needed, "cable's free tail")
 
 
+def parked_collision(
+    start: FloatArray, end: FloatArray, parked: Mapping[Arm, FloatArray], cable_radius: float
+) -> Collision | None:
+    """The parked gripper (if any) that the straight taut cable from ``start`` to ``end`` hits.
+
+    A gripper that stands still while the other one works (holding another
+    cable, or let go) is in the way where the segment passes within
+    :data:`PARKED_REACH` of its tool centre point (horizontally) above the
+    bottom of its pads: the arm above it leaves no way over.
+    """
+    a, b = _flat(start), _flat(end)
+    ab = b - a
+    n2 = float(ab @ ab)
+    for arm, at in parked.items():
+        p = _flat(at)
+        t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+        if float(np.linalg.norm(a + t * ab - p)) > PARKED_REACH:
+            continue
+        height = float(start[2]) + t * float(end[2] - start[2])
+        bottom = float(at[2]) - PAD_DEPTH - cable_radius - CLEARANCE
+        if height > bottom:
+            return Collision(f"the {arm} gripper", height, bottom, "cable")
+    return None
+
+
 @dataclass(frozen=True)
 class Collision:
     """A taut cable segment (or the gripper holding it) that runs into a fixture.
@@ -533,6 +566,13 @@ class Collision:
     height: float
     needed: float
     by: Literal["cable", "gripper", "cable's free tail"] = "cable"
+
+
+def _needs(hit: Collision) -> str:
+    """What clears the thing a :class:`Collision` runs into, for an error message."""
+    if hit.fixture.endswith(" gripper"):  # parked_collision: only under its fingers
+        return f"the bottom of {hit.fixture}'s fingers is at {hit.needed:.3f} m"
+    return f"{hit.fixture} needs at least {hit.needed:.3f} m"
 
 
 def segment_collision(
@@ -620,6 +660,10 @@ class _Planner:
             for arm, _ in cable.holds:
                 self.holder[arm] = cable.name
         self.done: dict[str, bool] = {}  # routed cable -> whether a clip holds its end
+        #: where each gripper stands [m] while the other one routes a cable
+        self.parked: dict[Arm, FloatArray] = {
+            arm: _vec(p) for arm, p in problem.robot.grippers.items()
+        }
         self.steep_single = 0  # clips F presses in beyond F_ANGLE (C's gripper was busy)
         self.clips_used: dict[str, str] = {}
 
@@ -681,6 +725,11 @@ class _Planner:
             cable.steps.append(len(self.steps) - 1)
             return other
         return None
+
+    def parked_other(self, cable: _Cable) -> dict[Arm, FloatArray]:
+        """Where the gripper that does not hold ``cable`` stands [m], by arm."""
+        other: Arm = "right" if cable.arm == "left" else "left"
+        return {other: self.parked[other]}
 
     def why_other_busy(self, cable: _Cable) -> str:
         other: Arm = "right" if cable.arm == "left" else "left"
@@ -784,6 +833,7 @@ class _Planner:
                 self.plan_clip(cable, fixture)
         self.done[spec.name] = self.fixtures[spec.route[-1].fixture].kind == "clip"
         self.holder[cable.arm] = spec.name
+        self.parked[cable.arm] = cable.gripper.copy()
         self.cables.append(
             CablePlan(spec.name, tuple(cable.steps), cable.s_contact, cable.at, cable.arm)
         )
@@ -903,13 +953,21 @@ class _Planner:
                 f"it (expected the gripper at least {FINGER_CLEARANCE:g} m beside that span or "
                 f"above it; hold the cable further out or the peg higher)",
             )
+        if motion.collision is not None and motion.collision.fixture.endswith(" gripper"):
+            hit = motion.collision
+            raise self.fail(
+                cable,
+                f"{motion.what} takes the cable into {hit.fixture}, which stands there while "
+                f"this cable is routed: the cable passes it at z = {hit.height:.3f} m, above "
+                f"the bottom of its fingers at {hit.needed:.3f} m",
+            )
         if motion.collision is not None:
             hit = motion.collision
             why = f" ({climb * 1e3:.0f} mm lower, for the winding's climb over its own strand)"
             raise self.fail(
                 cable,
                 f"{motion.what} takes the {hit.by} into {hit.fixture}: it passes at z = "
-                f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m, and the "
+                f"{hit.height:.3f} m, {_needs(hit)}, and the "
                 f"cable cannot pass the peg higher than z = {hi:.3f} m" + (why if climb else ""),
             )
         last = self.fixtures.get(cable.last) if cable.last else None
@@ -1087,6 +1145,7 @@ class _Planner:
                     )
                     or gripper_collision(point, self.problem.fixtures, around)
                     or self.tail_hit(cable, point, pivot, around)
+                    or parked_collision(pivot, point, self.parked_other(cable), cable.spec.radius)
                 )
                 if collision is not None:
                     what = "winding round the peg"
@@ -1150,7 +1209,7 @@ class _Planner:
             raise self.fail(
                 cable,
                 f"{what} takes the {hit.by} into {hit.fixture}: it passes at z = "
-                f"{hit.height:.3f} m, {hit.fixture} needs at least {hit.needed:.3f} m there "
+                f"{hit.height:.3f} m, {_needs(hit)} there "
                 f"(expected the swept cable and the gripper clear of every other fixture)",
             )
 
@@ -1178,6 +1237,8 @@ class _Planner:
                 hit = segment_collision(pivot, g, self.problem.fixtures, cable.spec.radius, skip)
                 if hit is None:
                     hit = self.held_hit(cable, g, pivot, held_skip)
+                if hit is None:
+                    hit = parked_collision(pivot, g, self.parked_other(cable), cable.spec.radius)
                 if hit is not None:
                     return hit
             previous = point
@@ -1320,8 +1381,8 @@ class _Planner:
                 raise self.fail(
                     cable,
                     f"pressing the cable into {clip.name} takes the {hit.by} into "
-                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {hit.fixture} needs "
-                    f"at least {hit.needed:.3f} m there, {why}",
+                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {_needs(hit)} "
+                    f"there, {why}",
                 )
             self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip clear")
         seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
@@ -1524,6 +1585,7 @@ class _Planner:
         self.emit(
             cable, "release", "let go with the gripper on the near side of the clip", arm=other
         )
+        self.parked[other] = seat - half * slot
         cable.gripper = seat + half * slot
         cable.s_contact = grasp + half + 0.5 * clip.length
         cable.contact = exit_point
@@ -1761,6 +1823,7 @@ class _Planner:
         )
         self.emit(cable, "release", "hand over: let go with the first gripper", arm=cable.arm)
         self.holder[cable.arm] = None
+        self.parked[cable.arm] = cable.gripper.copy()
         cable.arm, cable.at, cable.gripper = other, at, grasp
         self.holder[other] = cable.spec.name
         self.emit(
