@@ -46,6 +46,18 @@ def test_a_peg_is_trusted_on_the_std_it_reports_against_its_wider_tolerance() ->
     assert not est._trusted_variance(_state(4.8e-3))
 
 
+def test_a_design_peg_is_trusted_against_the_truth_s_tolerance_its_radius_plus_3_mm() -> None:
+    # random board 1652323633: F4 (radius 6 mm, cable 2.6 mm) was trusted at
+    # a reported 5.1 mm std against half of 6 + 2.6 + 3 mm, and was 10.1 mm
+    # off, beyond the 9 mm the truth check allows: a two-sigma error
+    est = context(round_fixtures={"A1": (CONTACT, 0.006 + 0.0026 + RADIUS_MARGIN)}).estimator
+    est.peg_radii = {"A1": 0.006}
+    est._track(0)
+    assert est.trust_limit() == pytest.approx(POINT_TRUST_FRACTION * (CONTACT_TOLERANCE + 0.006))
+    assert 2.0 * est.trust_limit() <= CONTACT_TOLERANCE + 0.006 + 1e-12
+    assert not est._trusted_variance(_state(5.1e-3))
+
+
 def test_a_design_fixture_keeps_its_design_until_its_estimate_is_trusted() -> None:
     # the shipped harness's A2: tensioning's nearly parallel lines met 8-23 mm
     # along the cable at a std of several mm; written into the model, that

@@ -1329,14 +1329,19 @@ class ModelEstimator:
         """Largest std [m] at which the model trusts an estimate of ``point`` (default its own).
 
         ``POINT_TRUST_FRACTION`` of the point's tolerance (``CONTACT_TOLERANCE``;
-        for a peg plus peg radius + cable radius of the board design), on the
+        for a peg plus its radius, as the truth check has it; where the
+        design gives no radius, the bearing radius less its margin), on the
         std the model reports (:meth:`_trusted_variance`); at most
-        ``trusted_std``.
+        ``trusted_std``. A peg's tolerance had the cable's radius too: random
+        board 1652323633 trusted F4 at a 5.1 mm std (limit 5.8 mm), 10.1 mm
+        off against a 9 mm tolerance, an ordinary two-sigma error.
         """
         if point is None:
             point = self._filter_point
         tolerance = CONTACT_TOLERANCE
-        if point is not None and point.label in self.round_fixtures:
+        if point is not None and point.label in self.peg_radii:
+            tolerance += self.peg_radii[point.label]
+        elif point is not None and point.label in self.round_fixtures:
             tolerance += self.round_fixtures[point.label][1] - RADIUS_MARGIN
         return min(self.trusted_std, POINT_TRUST_FRACTION * tolerance)
 
