@@ -331,6 +331,27 @@ def test_a_winding_keeps_the_cable_clear_of_the_other_gripper() -> None:
         assert "winding round the peg takes the cable into the right gripper" in info.value.reason
 
 
+def test_a_slide_ends_clear_of_the_fixtures_its_hanging_tail_would_land_on() -> None:
+    # random board 303464894: the slide out of F4 ended 16 mm from the centre
+    # of F6 beyond the next clip; the tail that hangs from the fingers caught
+    # in F6's jaws and was dragged out of them. The slide's spare lead gives way.
+    route = [RouteEntry("C1"), RouteEntry("C2")]
+
+    def slides(board: tuple[BoardFixture, ...]) -> list[float]:
+        p = plan_routes(RouteProblem(board, (cable("W1", route, holds=(("left", 0.30),)),), ROBOT))
+        assert [s.params["clip"] for s in p.steps if "clip" in s.params] == ["C1", "C2"]
+        return [float(s.params["distance"]) for s in p.steps if "distance" in s.params]
+
+    free = slides(BOARD)
+    # a clip just past where the slide along C1's slot ends (x = 0.41 + 0.185 m)
+    beyond = BoardFixture("X", "clip", (0.61, 0.125, 0.08), yaw=0.0, push_force=2.5, length=0.03)
+    shortened = slides((*BOARD, beyond))
+    assert shortened[0] == pytest.approx(free[0])
+    assert shortened[1] < free[1] - 0.01
+    end = np.array([0.41 + shortened[1], 0.10])  # the slide runs along C1's slot (+x)
+    assert float(np.linalg.norm(end - np.array([0.61, 0.125]))) >= 0.015 + planner.SLIDE_CLEAR
+
+
 def test_lifting_a_cable_out_of_its_clip_over_a_peg_is_refused() -> None:
     # NEAR lies right of the cable leaving C1: kept on the cable's left, the
     # cable is lifted over its top 10 cm from C1, 21 deg up out of the clip

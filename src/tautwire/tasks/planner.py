@@ -116,6 +116,9 @@ TAIL_REACH = 0.025
 GRIPPER_ABOVE = 0.015
 #: The name of the collision of a winding gripper with its cable's span into the peg.
 OWN_SPAN = "the cable's own span"
+#: Horizontal room [m] a slide leaves between where it ends and the reach of
+#: the fixture it brings cable towards, for the tail that hangs from the fingers.
+SLIDE_CLEAR = 0.03
 #: Cable [m] a slide (E) leaves beyond the gripper, so that the end stays in the fingers.
 TAIL = 0.03
 #: Angle [rad] past the tangent by which a move presses the cable onto a peg.
@@ -1707,8 +1710,30 @@ class _Planner:
                 f"(the route so far {cable.s_contact:.3f} m plus {need:.3f} m), it is "
                 f"{cable.spec.length:.3f} m long",
             )
+        least = distance
         distance = min(distance + max(lead - MIN_LEAD, 0.0), cable.spec.length - TAIL - cable.at)
-        out = cable.gripper + _unit(cable.gripper - cable.contact) * distance
+        ahead = _unit(cable.gripper - cable.contact)
+        # the free tail hangs from the fingers: a slide that ends over a
+        # fixture lays the tail on it (random board 303464894: the slide
+        # out of F4 towards F5 ended 16 mm from the centre of F6 beyond; the
+        # tail caught in F6's jaws, pulled the wrist to 11.5 N and was
+        # dragged out of the fingers); the lead beyond what is needed gives
+        # way first
+        below = [
+            f for f in self.problem.fixtures if f.name != cable.last and fixture_top(f) is not None
+        ]
+        for d in np.linspace(distance, least, 9):
+            end = _flat(cable.gripper + ahead * float(d))
+            if all(
+                float(np.linalg.norm(end - _flat(_vec(f.position))))
+                >= fixture_reach(f) + SLIDE_CLEAR
+                for f in below
+            ):
+                distance = float(d)
+                break
+        else:
+            distance = least
+        out = cable.gripper + ahead * distance
         self.check_reach(cable, out, "sliding the cable out")
         # checked from where the gripper really is (F leaves it low); the
         # fixture the slide brings cable towards is not checked: the slide
