@@ -117,7 +117,7 @@ GRIPPER_ABOVE = 0.015
 #: The name of the collision of a winding gripper with its cable's span into the peg.
 OWN_SPAN = "the cable's own span"
 #: Horizontal room [m] a slide leaves between where it ends and the reach of
-#: the fixture it brings cable towards, for the tail that hangs from the fingers.
+#: every fixture but the one it leaves, for the tail that hangs from the fingers.
 SLIDE_CLEAR = 0.03
 #: Cable [m] a slide (E) leaves beyond the gripper, so that the end stays in the fingers.
 TAIL = 0.03
