@@ -539,12 +539,10 @@ def parked_collision(
     bottom of its pads: the arm above it leaves no way over.
     """
     a, b = _flat(start), _flat(end)
-    ab = b - a
-    n2 = float(ab @ ab)
     for arm, at in parked.items():
         p = _flat(at)
-        t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
-        if float(np.linalg.norm(a + t * ab - p)) > PARKED_REACH:
+        t = _along(a, b, p)
+        if float(np.linalg.norm(a + t * (b - a) - p)) > PARKED_REACH:
             continue
         height = float(start[2]) + t * float(end[2] - start[2])
         bottom = float(at[2]) - PAD_DEPTH - cable_radius - CLEARANCE
@@ -571,9 +569,21 @@ class Collision:
     by: Literal["cable", "gripper", "cable's free tail"] = "cable"
 
 
+def _along(a: FloatArray, b: FloatArray, p: FloatArray) -> float:
+    """Where along the segment from ``a`` to ``b`` (0 to 1) it passes nearest ``p``."""
+    ab = b - a
+    n2 = float(ab @ ab)
+    return 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+
+
+def _hits_gripper(hit: Collision) -> bool:
+    """Whether ``hit`` is a parked gripper's (:func:`parked_collision`), not a fixture's."""
+    return hit.fixture.endswith(" gripper")
+
+
 def _needs(hit: Collision) -> str:
     """What clears the thing a :class:`Collision` runs into, for an error message."""
-    if hit.fixture.endswith(" gripper"):  # parked_collision: only under its fingers
+    if _hits_gripper(hit):  # only under its fingers
         return f"the bottom of {hit.fixture}'s fingers is at {hit.needed:.3f} m"
     return f"{hit.fixture} needs at least {hit.needed:.3f} m"
 
@@ -594,13 +604,12 @@ def segment_collision(
     """
     a, b = _flat(start), _flat(end)
     ab = b - a
-    n2 = float(ab @ ab)
     for fixture in fixtures:
         top = fixture_top(fixture)
         if top is None or fixture.name in skip:
             continue
         p = _flat(_vec(fixture.position))
-        t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+        t = _along(a, b, p)
         if float(np.linalg.norm(a + t * ab - p)) > fixture_reach(fixture) + cable_radius:
             continue
         height = float(start[2]) + t * float(end[2] - start[2])
@@ -956,7 +965,7 @@ class _Planner:
                 f"it (expected the gripper at least {FINGER_CLEARANCE:g} m beside that span or "
                 f"above it; hold the cable further out or the peg higher)",
             )
-        if motion.collision is not None and motion.collision.fixture.endswith(" gripper"):
+        if motion.collision is not None and _hits_gripper(motion.collision):
             hit = motion.collision
             raise self.fail(
                 cable,
