@@ -1748,12 +1748,12 @@ class _Planner:
         # fixture the slide brings cable towards is not checked: the slide
         # ends short of it, and the moves after it aim the cable over it
         start = cable.gripper if cable.pressed is None else cable.pressed
-        low = start + _unit(start - cable.contact) * distance
         skip = frozenset(n for n in (cable.last, cable.fixture) if n is not None)
         # the fingers must clear the fixture the slide brings cable towards
         # too: random board 1808415002's E after F2 slid the gripper 141 mm
         # along F2's slot, over F3 126 mm on, and pulled 25 N
         fingers = frozenset(n for n in (cable.last,) if n is not None)
+        low = self.slide_end(cable, start, distance)
         if self.path_collision(cable, cable.contact, start, [low], skip, fingers) is not None:
             lifted = self.slide_lift(cable, start, distance, skip, fingers)
             if lifted is not None:
@@ -1761,7 +1761,7 @@ class _Planner:
                     cable, lifted, "lift the cable clear of the board before sliding it out"
                 )
                 start = lifted
-                low = out = start + _unit(start - cable.contact) * distance
+                low = out = self.slide_end(cable, start, distance)
                 self.check_reach(cable, out, "sliding the cable out")
         self.require_clear(
             cable, cable.contact, start, [low], "sliding the cable out", cable.fixture, True
@@ -1825,7 +1825,7 @@ class _Planner:
                 lifted = c + radius * (
                     math.cos(rise) * aside + math.sin(rise) * np.array([0.0, 0.0, 1.0])
                 )
-                out = lifted + _unit(lifted - c) * distance
+                out = self.slide_end(cable, lifted, distance)
                 if (
                     self.robot.reach.contains([float(v) for v in lifted])
                     and self.robot.reach.contains([float(v) for v in out])
@@ -1834,6 +1834,22 @@ class _Planner:
                 ):
                     return lifted
         return None
+
+    def slide_end(self, cable: _Cable, start: FloatArray, distance: float) -> FloatArray:
+        """Where E, started at ``start`` [m], ends after ``distance`` [m].
+
+        E slides along the line from the model's contact through the
+        gripper's start: after a clip (F, C) that contact is the clip's
+        seat, not the slot's end the cable leaves by, and the line from the
+        seat rises less. Random board 1874532039: planned from F5's exit
+        through the lifted gripper, the slide was to pass F6 22 mm over its
+        jaws; it slid from F5's seat (and from 2.4 mm under its lift, within
+        the move's tolerance), passed 6 mm over them, the tail caught in
+        F6's jaws and the wrist reached the protective stop (14.5 N).
+        """
+        last = self.fixtures.get(cable.last) if cable.last else None
+        pivot = _vec(last.position) if last is not None and last.kind == "clip" else cable.contact
+        return start + _unit(start - pivot) * distance
 
     def hand_over(self, cable: _Cable, at: float, what: str) -> None:
         """Hand the cable over: the other gripper grasps at ``at`` [m], the first lets go."""
