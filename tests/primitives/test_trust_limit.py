@@ -9,6 +9,7 @@ from tautwire.estimation.contact_point_filter import FilterState
 from tautwire.estimation.round_contact import RADIUS_MARGIN
 from tautwire.primitives.model_estimator import (
     CONTACT_TOLERANCE,
+    PEG_TRUST_FRACTION,
     POINT_TRUST_FRACTION,
     ROUND_LINE_ERROR,
     SYSTEMATIC_LINE_ERROR,
@@ -25,12 +26,18 @@ def test_a_point_is_trusted_on_the_std_it_reports() -> None:
     est._track(0)  # the filter estimates A1, a point contact
     limit = est.trust_limit()
     assert limit == pytest.approx(POINT_TRUST_FRACTION * CONTACT_TOLERANCE)
-    # the filter's std plus the line model's systematic error, against half the tolerance
+    # the filter's std plus the line model's systematic error, against 0.4 of the tolerance
     inside = np.sqrt(limit**2 - SYSTEMATIC_LINE_ERROR**2)
     assert est._trusted_variance(_state(0.99 * inside))
     # robustness trial 130: 1.3 mm of filter std, 1.65 mm reported, 3.5 mm off: not trusted
     assert not est._trusted_variance(_state(1.31e-3))
     assert not est._trusted_variance(_state(1.01 * inside))
+    # random board 1874532039: A2 at 1.1 mm of filter std (1.5 mm reported), 3.9 mm off
+    assert not est._trusted_variance(_state(1.1e-3))
+    # a point trusted at the limit is within tolerance at 2.5 reported std ...
+    assert 2.5 * limit <= CONTACT_TOLERANCE + 1e-12
+    # ... and a point contact can be trusted at all: the systematic error leaves room
+    assert limit > SYSTEMATIC_LINE_ERROR
 
 
 def test_a_peg_is_trusted_on_the_std_it_reports_against_its_wider_tolerance() -> None:
@@ -38,7 +45,7 @@ def test_a_peg_is_trusted_on_the_std_it_reports_against_its_wider_tolerance() ->
     est._track(0)
     tolerance = CONTACT_TOLERANCE + 0.0085 - 0.003
     limit = est.trust_limit()
-    assert limit == pytest.approx(min(est.trusted_std, POINT_TRUST_FRACTION * tolerance))
+    assert limit == pytest.approx(min(est.trusted_std, PEG_TRUST_FRACTION * tolerance))
     inside = np.sqrt(limit**2 - ROUND_LINE_ERROR**2)
     assert est._trusted_variance(_state(0.99 * inside))
     assert not est._trusted_variance(_state(1.01 * inside))
@@ -53,7 +60,7 @@ def test_a_design_peg_is_trusted_against_the_truth_s_tolerance_its_radius_plus_3
     est = context(round_fixtures={"A1": (CONTACT, 0.006 + 0.0026 + RADIUS_MARGIN)}).estimator
     est.peg_radii = {"A1": 0.006}
     est._track(0)
-    assert est.trust_limit() == pytest.approx(POINT_TRUST_FRACTION * (CONTACT_TOLERANCE + 0.006))
+    assert est.trust_limit() == pytest.approx(PEG_TRUST_FRACTION * (CONTACT_TOLERANCE + 0.006))
     assert 2.0 * est.trust_limit() <= CONTACT_TOLERANCE + 0.006 + 1e-12
     assert not est._trusted_variance(_state(5.1e-3))
 
