@@ -749,3 +749,25 @@ def test_c_is_refused_where_its_grippers_would_run_into_a_peg_on_the_way(y: floa
     plan(w1)  # without the peg, C5 is planned
     with pytest.raises(RouteError, match=r"C's grippers, carried over C5, would run into PX"):
         plan_routes(RouteProblem((*BOARD, peg), (w1,), ROBOT))
+
+
+def test_a_clip_the_cable_rises_to_too_steeply_for_f_gets_c_or_is_refused() -> None:
+    """F's own precondition, checked where the winding really leaves its peg.
+
+    Random board 1991395197: W1, wound 352 deg round F1 at 97 mm, left it on
+    top of its own strand at about 108 mm and rose 16.7 deg to F2, beyond F's
+    13 deg; the planner had put the leave at the pass height (10 deg) and F
+    refused at run time.
+    """
+    cp = BoardFixture("CP", "clip", (0.31, 0.11, 0.08), yaw=-0.12, push_force=2.5, length=0.03)
+    board = (*BOARD, cp)
+    wound = cable("W1", [RouteEntry("P1", "left", wind=1), RouteEntry("CP")], length=1.0)
+    p = plan_routes(RouteProblem(board, (wound,), ROBOT))
+    assert [s.primitive for s in p.steps if "clip" in s.primitive] == ["parallel_clipping"]
+    busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    with pytest.raises(RouteError) as info:
+        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
+    err = info.value
+    assert (err.cable, err.entry, err.fixture) == ("W1", 2, "CP")
+    assert "deg from the clip" in err.reason and "F clips at most 13 deg" in err.reason
+    assert "holds W2" in err.reason and "\n" not in str(err)

@@ -54,6 +54,7 @@ from tautwire.primitives.clip_sensing import (
     MAX_FAR_RISE,
     PRESS_MARGIN,
     PivotPress,
+    far_rise,
     push_tension,
 )
 from tautwire.primitives.parallel_clipping import ABOVE as PARALLEL_ABOVE
@@ -192,6 +193,10 @@ CROSS_MARGIN = math.radians(45.0)
 #: mm, lay on 101-107 mm past the crossing, reached the top at 110 mm and
 #: slipped off it).
 CROSS_CLIMB = 1.5
+#: Height [cable diameters] above its pass height at which a winding leaves its
+#: peg, on top of its own strand, for each crossing: measured 1.5-2.2 (random
+#: boards 208802845 and 1991395197, wound once), with half a diameter to spare.
+LEAVE_CLIMB = 2.5
 
 
 class RouteError(TautwireError):
@@ -1045,7 +1050,10 @@ class _Planner:
             left = max(radius - rho * rest, MIN_LEAD)
             cable.gripper = centre + _turn(_unit(start), sign * rest) * left
         self.advance_peg(cable, peg, entry, following)
-        cable.contact[2] = z_pass
+        # a winding leaves the peg on top of its own strand (random board
+        # 1991395197: wound 352 deg round F1 at 97 mm, the cable left it at
+        # about 108 mm and rose 16.7 deg to the next clip, too steep for F)
+        cable.contact[2] = z_pass + climb * LEAVE_CLIMB / CROSS_CLIMB
         cable.last = peg.name
 
     def peg_motion(
@@ -1318,7 +1326,21 @@ class _Planner:
                 f"the cable would reach the clip at {math.degrees(slope):.0f} deg from its last "
                 f"fixed point at {_fmt(c)} (expected at most {math.degrees(MAX_ANGLE):.0f} deg)",
             )
-        if angle <= F_ANGLE or (angle <= SLOT_ANGLE and not self.other_arm_available(cable)):
+        single = angle <= F_ANGLE or (angle <= SLOT_ANGLE and not self.other_arm_available(cable))
+        rise = far_rise(c, seat, slot, 0.5 * clip.length)
+        if single and rise > MAX_FAR_RISE:
+            # F's own precondition: steeper, the far side holds the slot's
+            # entry end up in the jaws' throat (single_arm_clipping.py)
+            if not self.other_arm_available(cable):
+                raise self.fail(
+                    cable,
+                    f"the cable rises {math.degrees(rise):.1f} deg from the clip to its last "
+                    f"fixed point at {_fmt(c)} (F clips at most "
+                    f"{math.degrees(MAX_FAR_RISE):.0f} deg) and C needs the other gripper, but "
+                    f"{self.why_other_busy(cable)}",
+                )
+            single = False
+        if single:
             if angle > F_ANGLE:
                 self.steep_single += 1
             self.plan_single_clip(cable, clip, exit_point)
