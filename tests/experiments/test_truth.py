@@ -18,6 +18,7 @@ from tautwire.experiments.truth import (
     check_step,
     coverage,
     judge_model,
+    point_deviations,
 )
 from tautwire.model import PathGraph
 from tautwire.primitives import PrimitiveContext, make_context
@@ -388,6 +389,24 @@ def test_a_trusted_clip_point_is_right_anywhere_along_its_slot() -> None:
     assert judged(seat + np.array([0.014, 0.0, 0.0]))  # near the slot's exit
     assert not judged(seat + np.array([0.0, 0.01, 0.0]))  # 10 mm beside the slot
     assert not judged(seat + np.array([0.05, 0.0, 0.0]))  # 35 mm past the exit
+
+    # and model_error scores it as the truth check judges it: against the
+    # cable's point in the slot (random board 635178977: a point at the
+    # slot's end read 15 mm off against the seat)
+    def scored(point: np.ndarray) -> tuple[float, float]:
+        graph = _graph(
+            [("fixed", "A", np.array([0.0, 0.0, 0.3]), None), ("fixed", "C", point, 0.001)],
+            gripper,
+        )
+        (dev,) = [d for d in point_deviations(graph, truth, "W") if d.label == "C"]
+        return dev.horizontal, dev.vertical
+
+    true_seat = truth.seat("C", "W")
+    at_seat = scored(true_seat)
+    at_end = scored(true_seat + np.array([0.014, 0.0, 0.0]))
+    assert at_end[0] == pytest.approx(at_seat[0], abs=1e-3)
+    assert at_end[0] < 0.002
+    assert scored(true_seat + np.array([0.0, 0.01, 0.0]))[0] == pytest.approx(0.01, abs=2e-3)
 
 
 def test_a_peg_estimate_is_scored_against_the_band_the_peg_holds_the_cable_over(

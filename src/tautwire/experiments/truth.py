@@ -1034,11 +1034,15 @@ def point_deviations(
     """Each point of ``cable``'s model that stands for a fixture or a gripper, against it.
 
     A gripper's point against its true tool centre point; a contact or
-    fixed point against the true point of the fixture it stands for
-    (:func:`check_contacts` says which): an anchor, a peg's axis point at the
-    cable's height, for a clip the cable's point nearest its seat (the
-    clipping primitives put the clip's point at its seat). A made-up point
-    stands for nothing and is left out (the step's truth counts it).
+    fixed point against the true point of the fixture it stands for, as the
+    step's truth check has it (:func:`check_contacts`): an anchor, a peg's
+    axis point within the band of heights it holds the cable over, for a
+    clip the cable's point in its slot nearest the model's (the clipping
+    primitives put it at the seat, the force's lines meet at the slot's end
+    the cable leaves by: both stand for the clip; scored against the seat, a
+    point at the slot's end read 15 mm off on random board 635178977). A
+    made-up point stands for nothing and is left out (the step's truth
+    counts it).
     """
     out: list[PointDeviation] = []
     for pt in graph.points:
@@ -1053,9 +1057,7 @@ def point_deviations(
     for c in check_contacts(graph, truth, cable, trusted_std):
         if c.made_up or c.truth is None or c.fixture is None:
             continue
-        # a clip's point is its seat (where F and C put it), not the slot's exit
-        true = truth.seat(c.fixture, cable) if c.fixture_type == "clip" else c.truth
-        d = c.estimate - true
+        d = c.estimate - c.truth
         out.append(
             PointDeviation(cable, c.label, c.fixture, float(np.hypot(d[0], d[1])), abs(d[2]))
         )
