@@ -101,8 +101,7 @@ CONTACT_TOLERANCE = 0.003
 #: its worst axis. At half (two std), random board 1874532039 (seed 2)
 #: trusted anchor A2 at a reported 1.5 mm std, 3.9 mm off: two false
 #: successes; at a third, no point contact was ever trusted (the systematic
-#: error alone reports 1 mm), and F aimed from designs that the cable no
-#: longer followed. On the robustness scenes the anchors whose estimate ended
+#: error alone reports 1 mm). On the robustness scenes the anchors whose estimate ended
 #: 3.3-7.0 mm off (tolerance 3 mm) reported 2.1-4.1 mm std, the anchors within
 #: it 1.0-1.7 mm; at 0.6 of the tolerance on the filter's std alone (the
 #: reported one up to 2.1 mm against 3 mm), robustness trial 130 trusted an

@@ -1053,7 +1053,7 @@ class _Planner:
         # a winding leaves the peg on top of its own strand (random board
         # 1991395197: wound 352 deg round F1 at 97 mm, the cable left it at
         # about 108 mm and rose 16.7 deg to the next clip, too steep for F)
-        cable.contact[2] = z_pass + climb * LEAVE_CLIMB / CROSS_CLIMB
+        cable.contact[2] = z_pass + crossings * LEAVE_CLIMB * 2.0 * cable.spec.radius
         cable.last = peg.name
 
     def peg_motion(
