@@ -61,6 +61,32 @@ def test_the_summary_counts_boards_and_quantiles() -> None:
     # false successes are worse than a failure, which is worse than a large error
     assert worst_board(records)["board"] == 2  # type: ignore[index]
     assert worst_board(records[:2])["board"] == 1  # type: ignore[index]
+    # a route the model has done and the simulator denies is counted apart
+    untrue = _record(3, completed=False, cause="route_untrue", false_routes=1)
+    report = summarise_boards([*records, untrue], seed=0)
+    assert report["false_routes"] == 1 and report["false_successes"] == 2
+    assert report["causes"] == {"not_clipped": 1, "route_untrue": 1}
+
+
+def test_a_board_whose_steps_agree_but_a_route_does_not_names_it() -> None:
+    """Random board 285895290 (seed 2): 46 steps, each true, and W1 ended on F1's wrong side."""
+    from tautwire.experiments.harness import BoardRun, _board_record
+
+    cables = [
+        {"name": "W1", "route_done": True, "route_truth": {"agrees": False, "detail": "F1: right"}},
+        {"name": "W2", "route_done": True, "route_truth": {"agrees": True, "detail": ""}},
+    ]
+    steps = [{"primitive": "move", "outcome": "success", "truth": {"agrees": True}}]
+    result = {"success": False, "steps": steps, "cables": cables, "sim_time": 1.0}
+    result["wall_time"] = 1.0
+    record = _board_record(0, 7, 0, BoardRun(result, [], {}, 15.0))
+    assert record["cause"] == "route_untrue" and record["false_routes"] == 1
+    assert record["false_successes"] == 0 and record["detail"] == "W1: F1: right"
+    # a false step is still named as such
+    steps.append({"primitive": "move", "outcome": "success", "truth": {"agrees": False}})
+    result["false_successes"] = 1
+    record = _board_record(0, 7, 0, BoardRun(result, [], {}, 15.0))
+    assert record["cause"] == "false_success" and record["false_successes"] == 1
 
 
 @pytest.mark.slow

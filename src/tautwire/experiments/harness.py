@@ -287,6 +287,11 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
     limit = run.force_limit
     me = r.get("model_error") or {}
     se = r.get("shape_error") or {}
+    untrue = _untrue_routes(r)
+    cause = failed.get("cause") if failed is not None else None
+    if cause is None and not r["success"]:
+        # every step ran: its truth, or a route the model has done and the simulator not
+        cause = "false_success" if false or not untrue else "route_untrue"
     return {
         "board": index,
         "seed": seed,
@@ -300,10 +305,10 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
         "failed_step": None
         if failed is None
         else f"{r['steps'].index(failed) + 1} {failed['primitive']} ({failed.get('cable')})",
-        "cause": (failed.get("cause") if failed is not None else None)
-        or (None if r["success"] else "false_success"),
+        "cause": cause,
         "detail": failed.get("detail") if failed is not None else _route_disagreement(r),
         "routes_done": sum(1 for c in r.get("cables", []) if c.get("route_done")),
+        "false_routes": len(untrue),
         "model_horizontal_mean": me.get("horizontal_mean"),
         "model_horizontal_max": me.get("horizontal_max"),
         "model_vertical_mean": me.get("vertical_mean"),
@@ -402,6 +407,7 @@ def _failed_record(spec: TrialSpec, redraws: int, cause: str, detail: str) -> di
         "cause": cause,
         "detail": detail,
         "routes_done": 0,
+        "false_routes": 0,
         "sim_time": 0.0,
         "wall_time": 0.0,
     }
@@ -442,6 +448,7 @@ def summarise_boards(records: Sequence[Mapping[str, Any]], **about: Any) -> dict
         "completed": len(done),
         "false_successes": sum(int(r["false_successes"]) for r in records),
         "boards_with_false_successes": sum(1 for r in records if r["false_successes"]),
+        "false_routes": sum(int(r.get("false_routes", 0)) for r in records),
         "over_force_limit": sum(1 for r in records if r["over_force_limit"]),
         "redraws": sum(int(r["redraws"]) for r in records),
         "model_error": {k: _quantiles([r.get(f"model_{k}") for r in records]) for k in ERROR_KEYS},
@@ -465,8 +472,9 @@ def boards_markdown(report: Mapping[str, Any], records: Sequence[Mapping[str, An
         f"# harness: {report['boards']} random boards (seed {report['seed']})",
         "",
         f"completed {report['completed']} of {report['boards']}, false successes "
-        f"{report['false_successes']} (on {report['boards_with_false_successes']} boards), true "
-        f"force over the limit on {report['over_force_limit']} boards, boards redrawn because "
+        f"{report['false_successes']} (on {report['boards_with_false_successes']} boards), "
+        f"routes done in the model that the simulator denies {report.get('false_routes', 0)}, "
+        f"true force over the limit on {report['over_force_limit']} boards, boards redrawn because "
         f"the planner refused them: {report['redraws']}, wall time {report['wall_time']:.0f} s "
         f"({report['backend']}, {report['workers']} workers)",
         "",
@@ -515,6 +523,7 @@ CSV_COLUMNS = (
     "cause",
     "detail",
     "routes_done",
+    "false_routes",
     *(f"model_{k}" for k in ERROR_KEYS),
     *(f"shape_{k}" for k in ERROR_KEYS),
     "sim_time",
@@ -639,11 +648,15 @@ def reproduce_harness_boards(
     return report
 
 
-def _route_disagreement(result: dict[str, Any]) -> str | None:
-    """Why a run whose every step agreed is no success: a route done in the model, not truly."""
-    wrong = [
+def _untrue_routes(result: Mapping[str, Any]) -> list[str]:
+    """The routes the model has done that the simulator does not show, with what it shows."""
+    return [
         f"{c.get('name')}: {(c.get('route_truth') or {}).get('detail', '')}"
         for c in result.get("cables", [])
         if c.get("route_done") and not (c.get("route_truth") or {}).get("agrees", True)
     ]
-    return "; ".join(wrong) or None
+
+
+def _route_disagreement(result: dict[str, Any]) -> str | None:
+    """Why a run whose every step agreed is no success: a route done in the model, not truly."""
+    return "; ".join(_untrue_routes(result)) or None
