@@ -15,7 +15,7 @@ from tautwire.experiments.harness import (
     BOARDS_CSV,
     BOARDS_JSON,
     BOARDS_MD,
-    _route_disagreement,
+    _untrue_routes,
     summarise_boards,
     worst_board,
 )
@@ -141,5 +141,5 @@ def test_a_run_whose_steps_all_agreed_says_which_route_the_simulator_denies() ->
         "route_done": True,
         "route_truth": {"agrees": False, "detail": "F6 does not hold the cable"},
     }
-    assert _route_disagreement({"cables": [done]}) is None
-    assert _route_disagreement({"cables": [done, denied]}) == "W2: F6 does not hold the cable"
+    assert _untrue_routes({"cables": [done]}) == []
+    assert _untrue_routes({"cables": [done, denied]}) == ["W2: F6 does not hold the cable"]

@@ -306,7 +306,7 @@ def _board_record(index: int, seed: int, redraws: int, run: BoardRun) -> dict[st
         if failed is None
         else f"{r['steps'].index(failed) + 1} {failed['primitive']} ({failed.get('cable')})",
         "cause": cause,
-        "detail": failed.get("detail") if failed is not None else _route_disagreement(r),
+        "detail": failed.get("detail") if failed is not None else "; ".join(untrue) or None,
         "routes_done": sum(1 for c in r.get("cables", []) if c.get("route_done")),
         "false_routes": len(untrue),
         "model_horizontal_mean": me.get("horizontal_mean"),
@@ -655,8 +655,3 @@ def _untrue_routes(result: Mapping[str, Any]) -> list[str]:
         for c in result.get("cables", [])
         if c.get("route_done") and not (c.get("route_truth") or {}).get("agrees", True)
     ]
-
-
-def _route_disagreement(result: dict[str, Any]) -> str | None:
-    """Why a run whose every step agreed is no success: a route done in the model, not truly."""
-    return "; ".join(_untrue_routes(result)) or None
