@@ -15,6 +15,7 @@ from tautwire.primitives.clip_sensing import ClipHeight, push_tension
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
 from tautwire.primitives.outcome import Outcome
+from tautwire.primitives.pair_transport import PairTransport
 from tautwire.primitives.parallel_tension import held_between_grippers
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
@@ -122,7 +123,22 @@ class ParallelClipping(Primitive):
             float(rotate(g.orientation, [1.0, 0.0, 0.0]) @ -self._rel_dir) < 0.0
             for g in (obs.left, obs.right)
         )
+        # the pair carried to over the seat turning and moving in step: the
+        # near gripper may not swing out beyond the cable it holds past the
+        # fixed point behind it (pair_transport.py)
+        rel_now = obs.left.position - obs.right.position
+        self._transport = PairTransport(
+            0.5 * (obs.left.position + obs.right.position),
+            rel_now,
+            self._goal(),
+            self._rel_dir,
+        )
         self._since = obs.time
+
+    def _goal(self) -> np.ndarray:
+        """The middle's set point over the seat [m], ``drop`` below ``ABOVE``."""
+        out: np.ndarray = self.info.position + np.array([0.0, 0.0, ABOVE - self.drop])
+        return out
 
     def _tool_frames(self, obs: Observation) -> DualPose:
         """Both grippers' poses, a flipped one's frame turned half about its z."""
@@ -142,13 +158,20 @@ class ParallelClipping(Primitive):
         as fast as the grippers carry the cable round, and stay along it (set
         straight onto the slot, the orientations turned at the speed limit
         while the positions lagged, the cable bent round both fingertips and
-        its tension rose from 3 to 14 N in half a second after H).
+        its tension rose from 3 to 14 N in half a second after H). While
+        aligning, the middle and the turn advance in step
+        (:class:`~tautwire.primitives.pair_transport.PairTransport`).
         """
         rel = obs.left.position - obs.right.position
         distance = float(np.linalg.norm(rel))
         line = rel / max(distance, 1e-12)
-        direction = _towards(line, self._rel_dir, LEAD)
-        centre = self.info.position + np.array([0.0, 0.0, ABOVE - self.drop])
+        if self.phase == "align":
+            middle = 0.5 * (obs.left.position + obs.right.position)
+            direction = _towards(line, self._transport.heading(middle), LEAD)
+            centre = self._transport.centre(line)
+        else:
+            direction = _towards(line, self._rel_dir, LEAD)
+            centre = self._goal()
         return CoordinatedPose(
             Pose(centre, orientation_along(-direction)),
             Pose(distance * direction, np.array([1.0, 0.0, 0.0, 0.0])),
@@ -170,7 +193,7 @@ class ParallelClipping(Primitive):
         if self.phase == "align":
             rel = obs.left.position - obs.right.position
             along = float(rel @ self._rel_dir) / max(norm3(rel), 1e-12)
-            over = norm3(now.absolute.position - self._desired(obs).absolute.position) < 0.003
+            over = norm3(now.absolute.position - self._goal()) < 0.003
             if over and along >= math.cos(SLOT_TOLERANCE):  # over the seat, along the slot
                 self.phase, self._since = "push", obs.time
         elif self.phase == "push":
