@@ -77,6 +77,8 @@ class PrimitiveContext:
         fixtures: Nominal fixture positions [m] known from the board's design
             (goals such as clips), by name. Not the cable's state.
         clips: The board design's clips by name.
+        pegs: The board design's pegs by name: the heights [m] of the foot
+            and the top of each, between which a cable can bear on it.
     """
 
     estimator: ModelEstimator
@@ -86,6 +88,7 @@ class PrimitiveContext:
     tension: float | None = None
     fixtures: dict[str, FloatArray] = field(default_factory=dict)
     clips: dict[str, ClipInfo] = field(default_factory=dict)
+    pegs: dict[str, tuple[float, float]] = field(default_factory=dict)
 
     @property
     def graph(self) -> PathGraph:
@@ -117,6 +120,7 @@ def make_context(
     min_jump: float = 5e-3,
     round_fixtures: dict[str, tuple[FloatArray, float]] | None = None,
     clips: dict[str, ClipInfo] | None = None,
+    pegs: dict[str, tuple[float, float]] | None = None,
 ) -> PrimitiveContext:
     """A context with the default estimators and controllers.
 
@@ -142,6 +146,7 @@ def make_context(
         round_fixtures: Pegs of the board design: name -> (axis point [m],
             peg radius + cable radius [m]) (see :class:`ModelEstimator`).
         clips: The board design's clips by name.
+        pegs: The board design's pegs by name: heights [m] of foot and top.
     """
     samples = max(1.0, estimation_period / control_period)
     # the filter sees the mean force of each estimation period: less noise
@@ -173,4 +178,5 @@ def make_context(
         None,
         dict(fixtures or {}),
         dict(clips or {}),
+        dict(pegs or {}),
     )

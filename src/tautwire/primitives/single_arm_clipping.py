@@ -14,6 +14,7 @@ from tautwire.primitives.arm_control import current_pose, tension_twist, with_po
 from tautwire.primitives.clip_sensing import (
     JAW_TOP,
     MAX_FAR_RISE,
+    SIDEWAYS,
     ClipHeight,
     PivotPress,
     far_rise,
@@ -75,6 +76,12 @@ PATH_SIDE_TURN = math.radians(10.0)
 #: Largest shift [m] of the far contact, across the line, that the measured
 #: pull may make while aligning (beyond it the line bears on something else).
 MAX_LINE_SHIFT = 0.01
+#: Largest height [m] by which the measured pull may move a peg's leave point
+#: up or down while aligning (a peg stands 60 mm tall).
+MAX_LINE_RISE = 0.04
+#: The measured line may bear on the clip where it passes lower than this
+#: [m] over the jaws' top, within ``SIDEWAYS`` of the slot (a cable's radius).
+BEARS_ABOVE = 0.003
 
 
 class SingleArmClipping(Primitive):
@@ -89,7 +96,9 @@ class SingleArmClipping(Primitive):
     (on the force's line of action, :meth:`_target`) goes onto the line,
     which runs from c moved across onto the measured pull's line
     (:meth:`_measured_shift`: a stiff cable bent at c leaves it beside c;
-    not from a peg, whose tangent leave point the model places, nor from an
+    not from a peg, whose tangent leave point the model places, but whose
+    height the pull's slope gives, as the cable slides along a peg,
+    :meth:`_measured_rise`; nor from an
     anchor, which the cable turns about at a known point; from a clip the
     alignment runs at the push's tension, as the bend there tightens with it),
     and the push starts once the line passes within ``ALIGN_MISS`` of the
@@ -148,6 +157,8 @@ class SingleArmClipping(Primitive):
         self.press = 0.0  # the press [N] on the clip planned for the push tension
         self._line_shift = np.zeros(3)  # the far contact onto the measured line [m]
         self._line_shift_filter: LowPass[np.ndarray] = LowPass(EXIT_TIME)
+        self._line_rise = 0.0  # a peg's leave point up onto the measured line [m]
+        self._line_rise_filter: LowPass[float] = LowPass(EXIT_TIME)
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Check the clip against the model; plan the pivot plane."""
@@ -172,6 +183,10 @@ class SingleArmClipping(Primitive):
         self._offset = np.zeros(3)
         self._line_shift_filter = LowPass(EXIT_TIME)
         self._line_shift = np.zeros(3)
+        self._line_rise_filter = LowPass(EXIT_TIME)
+        self._line_rise = 0.0
+        self._rises = False  # a peg's leave point moves up or down onto the measured line
+        self._span = (-math.inf, math.inf)  # heights [m] the far contact may be moved between
         self._tug = ClipTug(np.array([1.0, 0.0, 0.0]))  # its plane is set when the push starts
         self._tug_reading: TugReading | None = None
         self._reached: float | None = None
@@ -290,6 +305,14 @@ class SingleArmClipping(Primitive):
         # shifted 8.7 mm, the cable went down 3.6-8 mm beside the slot;
         # unshifted, clipped 1.4 mm beside it)
         self._shifts = False
+        # but the height the cable leaves a peg at is not known: pulled taut
+        # from a lower fixture before it, it slides down the peg (random
+        # board 1627120487's F7 from peg F6: the model held it 95.6 mm high,
+        # it was at 75 mm, and the cable aimed 15 mm over the seat met the
+        # clip's side below its jaws, 7.8 mm beside the slot); the pull's
+        # slope tells it (:meth:`_measured_rise`)
+        self._rises = True
+        self._span = ctx.pegs.get(label, self._span)
         estimate = est.contact_estimate()
         radius = (
             estimate.radius
@@ -324,7 +347,7 @@ class SingleArmClipping(Primitive):
         """
         entry = self._exit - 2.0 * (self._exit - self.info.position)
         entry[2] = self._exit[2]
-        far = self._contact - entry
+        far = self._far() - entry
         plan = PivotPress(
             radius=norm3(p_gripper - self._exit),
             tension=max(tension, 0.1),
@@ -361,6 +384,53 @@ class SingleArmClipping(Primitive):
             return self._line_shift
         return self._line_shift_filter.update(time, shift)
 
+    def _measured_rise(self, time: float, leaves: np.ndarray, direction: np.ndarray) -> float:
+        """How far [m] the measured line passes above a peg's leave point.
+
+        The taut span is straight from where it leaves the fingers along the
+        pull, so the pull's slope gives the height it passes over the leave
+        point (1 deg of slope is 4 mm at 0.23 m). Low-passed over
+        ``EXIT_TIME``, at most ``MAX_LINE_RISE``; nothing changes while the
+        pull runs mostly vertically, and the point stays between the peg's
+        foot and top. Not read while the line may bear on the clip
+        (:meth:`_bears`).
+        """
+        d = np.asarray(direction, dtype=float)
+        n2 = float(d[0] * d[0] + d[1] * d[1])
+        if n2 < 0.25:
+            return self._line_rise
+        away = self._contact - leaves
+        lam = float(away[0] * d[0] + away[1] * d[1]) / n2
+        if lam <= 0.0:
+            return self._line_rise
+        z = float(leaves[2]) + lam * float(d[2])
+        low, high = self._span  # the cable bears on the peg between its foot and top
+        rise = min(max(z, low), high) - float(self._contact[2])
+        rise = min(max(rise, -MAX_LINE_RISE), MAX_LINE_RISE)
+        return self._line_rise_filter.update(time, rise)
+
+    def _bears(self) -> bool:
+        """Whether the measured line may bear on the clip: low over its slot.
+
+        There the line bends at the clip, not at the peg, and says nothing
+        of the peg: a cable lying in the seat already, its line extended to
+        the peg reading 30 mm low, lifted the gripper until it pulled the
+        cable out (the F-from-peg test scene with the clip raised 12 mm).
+        """
+        height, miss = self.sensing.height, self.sensing.miss
+        return (
+            height is not None
+            and miss is not None
+            and height < JAW_TOP + BEARS_ABOVE
+            and miss < SIDEWAYS
+        )
+
+    def _far(self) -> np.ndarray:
+        """The far contact [m] the cable is aimed from: onto the measured line."""
+        out: np.ndarray = self._contact + self._line_shift
+        out[2] += self._line_rise
+        return out
+
     def _target(self, obs: Observation, state: TensionState) -> np.ndarray:
         """The gripper's set point while aligning: the cable's exit on the line over the clip.
 
@@ -369,7 +439,7 @@ class SingleArmClipping(Primitive):
         centre point after a regrip (E, B) or a hand-over: that point, not
         the tool centre point, goes onto the line.
         """
-        c = self._contact + self._line_shift  # on the measured line
+        c = self._far()  # on the measured line
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
         w = (through - c) / float(np.linalg.norm(through - c))
         exit_point = obs.gripper(self.arm).position + self._offset
@@ -386,7 +456,7 @@ class SingleArmClipping(Primitive):
         error = me - target
         if float(np.linalg.norm(error)) >= ALIGN_TOLERANCE:
             return False
-        c = self._contact + self._line_shift  # on the measured line
+        c = self._far()  # on the measured line
         through = self.info.position + np.array([0.0, 0.0, ABOVE])
         w = through - c
         w[2] = 0.0
@@ -443,6 +513,8 @@ class SingleArmClipping(Primitive):
             if self.phase == "align" and self._shifts:
                 self._line_shift = self._measured_shift(obs.time, leaves, state.direction)
         height = self.sensing.update(obs.time, leaves, state.direction, state.taut)
+        if state.taut and self.phase == "align" and self._rises and not self._bears():
+            self._line_rise = self._measured_rise(obs.time, leaves, state.direction)
         if self.phase in ("lift", "tug"):
             self._tug.update(obs.time, wrench.force)
         force = self._base_force
@@ -469,8 +541,9 @@ class SingleArmClipping(Primitive):
                 # lift back only to the straight line from the contact through
                 # the seat: a clipped cable then lies in the seat unloaded
                 # (a weak clip is not pulled open), an unclipped one on the jaws
-                rise = float(self._contact[2] - self.info.position[2])
-                run = float(np.hypot(*(self.info.position - self._contact)[:2]))
+                far = self._far()
+                rise = float(far[2] - self.info.position[2])
+                run = float(np.hypot(*(self.info.position - far)[:2]))
                 self._angle_rest = max(math.atan2(rise, run), self._angle0)
                 self.force = self._plan_force(me.position, state.tension, ctx)
         elif self.phase in ("push", "press"):
@@ -559,7 +632,7 @@ class SingleArmClipping(Primitive):
 
     def _read_tug(self, p_gripper: np.ndarray) -> None:
         """Judge the tug: a pull that turned about the far contact was not held by the clip."""
-        reading = self._tug.reading(p_gripper, self._exit, self._contact)
+        reading = self._tug.reading(p_gripper, self._exit, self._far())
         self._tug_reading = reading
         if reading.distinct and not reading.holds:
             self.outcome = Outcome.failure(
@@ -600,6 +673,6 @@ class SingleArmClipping(Primitive):
         g, c = est.gripper_index, est.contact_index
         s_c = float(ctx.graph.arc_lengths()[c]) if c is not None else 0.0
         sense = 1.0 if c is None or c < g else -1.0
-        arc = s_c + sense * (self._lead + norm3(self.info.position - self._contact))
+        arc = s_c + sense * (self._lead + norm3(self.info.position - self._far()))
         add_on_sensing_edge(est, arc, self.info.position, "fixed", self.clip)
         self.outcome = verdict

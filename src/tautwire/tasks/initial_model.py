@@ -197,6 +197,11 @@ def cable_context(
         for f in scenario.board.fixtures
         if f.type == "clip"
     }
+    pegs = {
+        f.name: (float(f.position[2]), float(f.position[2] + f.height))
+        for f in scenario.board.fixtures
+        if f.type == "peg"
+    }
     robot = scenario.robot
     ctx = make_context(
         graph,
@@ -210,6 +215,7 @@ def cable_context(
         fixtures=fixtures,
         round_fixtures=round_fixtures,
         clips=clips,
+        pegs=pegs,
     )
     ctx.estimator.peg_tops = {
         f.name: float(f.position[2]) + f.height for f in scenario.board.fixtures if f.type == "peg"
