@@ -6,6 +6,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from tautwire.experiments.truth import model_side
 from tautwire.model import PathGraph
 from tautwire.primitives import make_context
 from tautwire.primitives.release import Release, release_point
@@ -105,3 +106,36 @@ def test_a_cable_no_gripper_holds_keeps_no_peg_height() -> None:
     handed = graph(["left", "right"])
     assert release_point(handed, "left", positions)
     assert np.allclose(handed.points[1].covariance, (0.004**2) * np.eye(3))
+
+
+def test_a_cable_no_gripper_holds_keeps_no_side_of_a_peg_it_barely_turns_round() -> None:
+    # random board 2124379844: W1, turned 32 deg round peg F3 and let go
+    # after its last clip, sprang to F3's other side; the model still had it
+    # round F3's right. A winding (over half a turn) keeps its side, and so
+    # does every peg while the other gripper still holds the cable.
+    def graph(arms: list[str], wraps: tuple[float | None, float | None]) -> PathGraph:
+        points = [
+            CONTACT,
+            np.array([0.2, 0.05, 0.09]),
+            np.array([0.25, 0.1, 0.09]),
+            np.array([0.35, 0.1, 0.08]),
+        ] + [GRIPPER + 0.05 * k for k in range(len(arms))]
+        g = PathGraph.from_positions(
+            points,
+            mass_per_length=0.03,
+            kinds=["fixed", "contact", "contact", "fixed"] + ["gripper"] * len(arms),
+            labels=["A1", "P1", "P2", "C1", *arms],
+        )
+        g.points[1].wrap, g.points[2].wrap = wraps
+        return g
+
+    positions = {"left": GRIPPER, "right": GRIPPER + 0.05}
+    alone = graph(["left"], (-0.56, 6.1))
+    assert model_side(alone, alone.points[1]) == "right"
+    assert release_point(alone, "left", positions)
+    assert model_side(alone, alone.points[1]) == ""  # which side: no longer known
+    assert model_side(alone, alone.points[2]) == "left"  # wound: kept
+    handed = graph(["left", "right"], (-0.56, None))
+    side = model_side(handed, handed.points[1])
+    assert release_point(handed, "left", positions)
+    assert model_side(handed, handed.points[1]) == side == "right"

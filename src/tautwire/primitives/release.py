@@ -7,6 +7,8 @@ and of a parallel clip whose second gripper is no longer needed.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import NDArray
 
@@ -21,6 +23,9 @@ from tautwire.robot import Arm, Command, GripperCommand, Observation
 
 FloatArray = NDArray[np.float64]
 
+#: Turn [rad] round a peg below which a cable that no gripper holds may
+#: leave it for its other side (a winding's friction keeps it).
+HELD_WRAP = math.pi
 #: The fingers count as open once they are this much [m] wider than when the release began.
 OPENED_BY = 0.004
 #: ... and have stayed so for this long [s].
@@ -40,7 +45,13 @@ def release_point(graph: PathGraph, arm: Arm, positions: dict[str, FloatArray]) 
     peg to the board, and its height's std becomes at least its height
     above the board (random board 2082005138: W1, wound round F2 at 94 mm
     and released after its last clip, slid down F2 to 27 mm while the
-    model held F2 at a trusted 4.6 mm std).
+    model held F2 at a trusted 4.6 mm std). Nor does anything keep it on
+    the side of a peg it turns round by less than ``HELD_WRAP``: the cable
+    straightens through its clips (which hold it across, not along), and
+    may spring off to the other side, so the model no longer says which
+    side (its ``wrap`` becomes 0; random board 2124379844: W1, turned 32 deg
+    round peg F3 and released after its last clip, ended on F3's other
+    side while the model still had it round F3's right).
 
     Returns:
         Whether the graph had a point held by ``arm``.
@@ -69,6 +80,8 @@ def release_point(graph: PathGraph, arm: Arm, positions: dict[str, FloatArray]) 
             cov = np.zeros((3, 3)) if pt.covariance is None else pt.covariance.copy()
             cov[2, 2] = max(float(cov[2, 2]), height * height)
             pt.covariance = cov
+            if pt.wrap is None or abs(pt.wrap) < HELD_WRAP:
+                pt.wrap = 0.0  # which side of the peg it ends on is no longer known
     return True
 
 
