@@ -3,6 +3,8 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.primitives import SingleArmTension
+from tautwire.primitives.model_estimator import TensionState
+from tautwire.primitives.single_arm_tension import SLACK_PULL_SPEED
 from tautwire.robot import Command
 from tautwire.tasks import TickRecord, run_step
 from tautwire.tasks.runner import PROTECTIVE_STOP
@@ -209,3 +211,32 @@ def test_a_cable_that_goes_slack_after_it_was_taut_has_slipped() -> None:
     report = run_step(robot, tension, ctx, on_tick=on_tick)
     assert report.outcome == "failure" and report.cause == "slipped", report
     assert "below 0.33 of its set point" in report.detail
+
+
+def test_slack_behind_a_clip_is_drawn_along_the_route_at_the_slack_speed() -> None:
+    # random board 1627120487: after C into F4, 88 mm of slack lay behind
+    # the clip; pulled with the gain of the stiff taut edge (2715 N/m) along
+    # a direction that at 0.3 N was the tail's weight, D crawled at 3 mm/s
+    ctx = context(k_initial=2715.0)
+    step = SingleArmTension("left", 3.0)
+    robot = SpringCableRobot(CONTACT, GRIPPER, 2715.0, slack=0.05, seed=1)
+    obs = robot.observe()
+    wandering = np.array([0.0, 0.3, -0.95])
+    state = TensionState(
+        tension=0.3,
+        direction=wandering / np.linalg.norm(wandering),
+        force=0.3 * wandering,
+        raw_force=0.3 * wandering,
+        contact=CONTACT.copy(),
+        span=float(np.linalg.norm(CONTACT - GRIPPER)),
+        taut=True,
+    )
+    pull, k_gain = step._slack_pull(ctx, obs, state, 3.0)
+    line = (CONTACT - GRIPPER) / np.linalg.norm(CONTACT - GRIPPER)
+    assert np.allclose(pull.direction, line)  # along the model's route
+    assert pull.tension == state.tension and pull.contact is state.contact
+    assert k_gain is not None
+    speed = ctx.controller.force.speed(3.0, 0.0, k_gain)
+    assert abs(speed) == pytest.approx(SLACK_PULL_SPEED)
+    # the stiff edge's own gain is many times slower
+    assert abs(ctx.controller.force.speed(3.0, 0.0, 2715.0)) < 0.3 * SLACK_PULL_SPEED
