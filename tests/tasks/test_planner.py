@@ -14,11 +14,13 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tautwire.cli.main import main
+from tautwire.experiments.harness_boards import draw_board
 from tautwire.robot.workspace import WORKSPACE
 from tautwire.scenario import parse_scenario
 from tautwire.scenario.route_problem import plan_scenario, route_problem, task_yaml
 from tautwire.tasks import planner
 from tautwire.tasks.planner import (
+    SLIDE_SKIP,
     SPAN,
     BoardFixture,
     CableToRoute,
@@ -771,3 +773,16 @@ def test_a_clip_the_cable_rises_to_too_steeply_for_f_gets_c_or_is_refused() -> N
     assert (err.cable, err.entry, err.fixture) == ("W1", 2, "CP")
     assert "deg from the clip" in err.reason and "F clips at most 13 deg" in err.reason
     assert "holds W2" in err.reason and "\n" not in str(err)
+
+
+def test_a_slide_the_tail_cuts_to_a_few_millimetres_is_left_out() -> None:
+    # random board 1652323633: W1's slide before F2 needed 1.1 mm; every
+    # longer one would have laid the hanging tail on a fixture, so the
+    # planner emitted a 1.1 mm slide, which ended before E judged anything
+    plan = plan_scenario(draw_board(1652323633).scenario)
+    slides = [
+        float(s.params["distance"])  # type: ignore[arg-type]
+        for s in plan.steps
+        if s.primitive == "single_arm_sliding"
+    ]
+    assert slides and min(slides) > SLIDE_SKIP
