@@ -56,7 +56,9 @@ class ParallelClipping(Primitive):
 
     Coordinated hybrid control: the absolute pose brings the middle of the
     cable between the grippers ``ABOVE`` over the clip's seat with the
-    cable along the slot; the grippers' distance is force-controlled (A's
+    cable along the slot, turning and moving in step so that the near
+    gripper stays within the cable it holds past the fixed point behind it
+    (:mod:`~tautwire.primitives.pair_transport`); the grippers' distance is force-controlled (A's
     tension, raised to three times the clip's push force while pushing:
     :func:`push_tension`). The absolute pose then descends: the cable bends
     over the clip at 2 f sin(alpha), until the snap is felt from the sensing
