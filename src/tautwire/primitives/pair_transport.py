@@ -40,10 +40,6 @@ def _heading(v: FloatArray) -> float:
     return math.atan2(float(v[1]), float(v[0]))
 
 
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
 class PairTransport:
     """Set points that carry a pair from its start to an end pose in step.
 
@@ -60,7 +56,8 @@ class PairTransport:
         self.start = np.asarray(centre, dtype=float).copy()
         self.goal = np.asarray(goal, dtype=float).copy()
         self.heading0 = _heading(np.asarray(line, dtype=float))
-        self.turn = _wrap(_heading(np.asarray(direction, dtype=float)) - self.heading0)
+        end = _heading(np.asarray(direction, dtype=float))
+        self.turn = math.remainder(end - self.heading0, math.tau)
 
     def moved(self, centre: FloatArray) -> float:
         """Share (0 to 1) of the middle's way made at ``centre``."""
@@ -75,7 +72,7 @@ class PairTransport:
         """Share (0 to 1) of the turn made with the grippers' line along ``line``."""
         if abs(self.turn) < LEAST_TURN:
             return 1.0
-        made = _wrap(_heading(np.asarray(line, dtype=float)) - self.heading0)
+        made = math.remainder(_heading(np.asarray(line, dtype=float)) - self.heading0, math.tau)
         return min(max(made / self.turn, 0.0), 1.0)
 
     def centre(self, line: FloatArray) -> FloatArray:

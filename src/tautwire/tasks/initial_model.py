@@ -217,9 +217,7 @@ def cable_context(
         clips=clips,
         pegs=pegs,
     )
-    ctx.estimator.peg_tops = {
-        f.name: float(f.position[2]) + f.height for f in scenario.board.fixtures if f.type == "peg"
-    }
+    ctx.estimator.peg_tops = {name: top for name, (_, top) in pegs.items()}
     ctx.estimator.peg_radii = {f.name: f.radius for f in scenario.board.fixtures if f.type == "peg"}
     ctx.estimator.slots = {
         name: (clip.position.copy(), clip.slot, 0.5 * clip.length) for name, clip in clips.items()
