@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.model import PathGraph
 from tautwire.primitives import make_context
-from tautwire.primitives.move import Move
+from tautwire.primitives.move import PEG_ABOVE, PEG_CLEARANCE, Move, peg_detour
 from tautwire.primitives.registry import make_primitive
 from tautwire.tasks import run_step
 
@@ -133,3 +135,72 @@ def test_a_move_needs_one_finite_target_and_an_arm(params: dict[str, object]) ->
 def test_a_step_s_cable_is_not_a_parameter_of_the_primitive() -> None:
     move = make_primitive("move", arm="left", to=[0.1, 0.0, 0.1], cable="W1")
     assert isinstance(move, Move)
+
+
+PEG = {"F3": (np.array([0.503, 0.171, 0.05]), 0.006, 0.11)}
+
+
+def test_a_move_past_a_peg_below_its_top_goes_over_it() -> None:
+    # random board 787338652: after E and D the left gripper stood at 97 mm
+    # (the plan expected 142 mm) and the move on passed 14 mm from F3's axis
+    start = np.array([0.498, 0.207, 0.097])
+    target = np.array([0.4774, 0.1246, 0.1232])
+    via = peg_detour(start, target, PEG)
+    assert len(via) == 2
+    top = 0.11 + PEG_ABOVE
+    assert np.allclose(via[0], [*start[:2], top]) and np.allclose(via[1], [*target[:2], top])
+    # each leg keeps clear: the climb and the descent stand outside the reach
+    axis = PEG["F3"][0]
+    for p in (start, target):
+        assert np.linalg.norm((p - axis)[:2]) > 0.006 + PEG_CLEARANCE
+    assert peg_detour(start, target, PEG, skip=frozenset({"F3"})) == []
+
+
+@given(
+    offset=st.floats(min_value=-0.06, max_value=0.06),
+    height=st.floats(min_value=0.06, max_value=0.2),
+)
+def test_the_detour_is_taken_exactly_when_the_straight_way_meets_the_peg(
+    offset: float, height: float
+) -> None:
+    axis = PEG["F3"][0]
+    start = axis + np.array([-0.1, offset, 0.0])
+    target = axis + np.array([0.1, offset, 0.0])
+    start[2] = target[2] = height
+    via = peg_detour(start, target, PEG)
+    in_the_way = abs(offset) < 0.006 + PEG_CLEARANCE and height < 0.11 + PEG_ABOVE
+    assert bool(via) == in_the_way
+    for p in via:  # the crossing runs at the clearance height
+        assert np.isclose(p[2], 0.11 + PEG_ABOVE)
+
+
+def test_a_move_that_starts_or_ends_by_a_peg_is_left_alone() -> None:
+    axis = PEG["F3"][0]
+    near = axis + np.array([0.015, 0.0, 0.05])
+    far = axis + np.array([-0.1, 0.0, 0.05])
+    assert peg_detour(near, far, PEG) == [] and peg_detour(far, near, PEG) == []
+
+
+def test_a_taut_move_crosses_a_peg_in_its_way_over_its_top() -> None:
+    # the sensing gripper swings its taut cable past a peg that stands in
+    # the straight way, 5 mm lower than the gripper: it rises, crosses, comes down
+    robot = _taut_robot()
+    target = GRIPPER + np.array([0.0, 0.12, 0.0])
+    axis = GRIPPER + np.array([0.0, 0.06, -0.06])
+    top = float(GRIPPER[2]) - 0.005
+    ctx = context(
+        k_initial=200.0,
+        round_fixtures={"P9": (axis, 0.006)},
+        pegs={"P9": (0.0, top)},
+    )
+    ctx.tension = 3.0
+    passing: list[float] = []
+
+    def near(r: object) -> None:
+        if np.linalg.norm((robot.p - axis)[:2]) < 0.006 + PEG_CLEARANCE:
+            passing.append(float(robot.p[2]))
+
+    report = run_step(robot, Move("left", to=target.tolist()), ctx, on_tick=near)
+    assert report.success, report.detail
+    assert passing and min(passing) > top + PEG_ABOVE - 0.004
+    assert abs(robot.tension() - 3.0) < 0.6

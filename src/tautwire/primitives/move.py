@@ -7,6 +7,7 @@ bringing it over a clip, lifting or re-posing a gripper, handing over.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 
@@ -33,6 +34,67 @@ TIMEOUT_SPEED = 0.02
 TIMEOUT_MARGIN = 8.0
 #: A taut move ends with the low-passed tension at least this fraction of its set point.
 TENSION_FRACTION = 0.5
+#: Horizontal clearance [m] beyond a peg's radius inside which a gripper passing
+#: the peg below ``PEG_ABOVE`` over its top would strike it with its fingers or
+#: the cable they hold (the planner's gripper clearance).
+PEG_CLEARANCE = 0.02
+#: Height [m] over a peg's top at which the tool centre point passes it (the pads
+#: reach 8 mm below it).
+PEG_ABOVE = 0.015
+
+
+def peg_detour(
+    start: FloatArray,
+    target: FloatArray,
+    pegs: dict[str, tuple[FloatArray, float, float]],
+    skip: frozenset[str] = frozenset(),
+) -> list[FloatArray]:
+    """Way points [m] that take a gripper from ``start`` to ``target`` over the pegs in its way.
+
+    A peg is in the way where the straight path passes within its radius
+    plus :data:`PEG_CLEARANCE` of its axis (horizontally) lower than
+    :data:`PEG_ABOVE` over its top, neither end lying within that reach (a
+    move that starts or ends by a peg is placed there on purpose). The
+    detour rises at the start to the highest such height, crosses at it and
+    comes down onto the target. Random board 787338652: the planner expected
+    the left gripper 142 mm high after E and D, it stood at 97 mm, and the
+    straight move on passed 14 mm from peg F3's axis at its top's height;
+    the held cable struck the peg, the fingers were forced 2 mm apart and
+    the wrist read 12 N (15.4 N true).
+
+    Args:
+        start: The tool centre point [m] where the move begins.  # (3,)
+        target: Where it ends [m].  # (3,)
+        pegs: name -> (axis point [m] (3,), radius [m], top height [m]).
+        skip: Pegs not checked (one the move sweeps the cable onto).
+
+    Returns:
+        The way points before ``target`` (none if the path is clear).
+    """
+    a, b = start[:2], target[:2]
+    ab = b - a
+    n2 = float(ab @ ab)
+    height = -math.inf
+    for name, (axis, radius, top) in pegs.items():
+        if name in skip:
+            continue
+        p = axis[:2]
+        reach = radius + PEG_CLEARANCE
+        if min(float(np.linalg.norm(a - p)), float(np.linalg.norm(b - p))) < reach:
+            continue
+        t = 0.0 if n2 < 1e-12 else min(1.0, max(0.0, float((p - a) @ ab) / n2))
+        if float(np.linalg.norm(a + t * ab - p)) >= reach:
+            continue
+        z = float(start[2]) + t * float(target[2] - start[2])
+        if z < top + PEG_ABOVE:
+            height = max(height, top + PEG_ABOVE)
+    if height == -math.inf:
+        return []
+    up = start.copy()
+    up[2] = max(float(start[2]), height)
+    over = target.copy()
+    over[2] = max(float(target[2]), height)
+    return [up, over]
 
 
 class Move(Primitive):
@@ -55,6 +117,10 @@ class Move(Primitive):
     after it failed at seed 4).
     Without ``taut``, or with a gripper that holds no cable, it is plain
     motion control to the target pose. The other gripper holds its pose.
+    Where the straight way passes a peg of the board design lower than its
+    top (the planner plans from where it expects the gripper, which E and
+    D may leave tens of millimetres off), the gripper rises first, crosses
+    over and comes down onto the target (:func:`peg_detour`).
 
     Preconditions: with ``taut``, a gripper that holds a cable must be the
     context's sensing gripper (its force is what keeps the tension).
@@ -136,6 +202,7 @@ class Move(Primitive):
         self.catch = catch
         self.target = np.zeros(3)
         self.error = math.inf  # remaining position error [m] (across the cable when taut)
+        self.via: list[FloatArray] = []  # way points [m] over pegs in the way, before the target
         self._holds = False
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
@@ -144,11 +211,19 @@ class Move(Primitive):
         self.target = self._goal.copy() if self._absolute else me.position + self._goal
         q = me.orientation if self.orientation is None else self.orientation
         self._q_target = np.asarray(q, dtype=float)
+        est = ctx.estimator
+        pegs = {
+            name: (axis, radius, ctx.pegs[name][1])
+            for name, (axis, radius) in est.round_fixtures.items()
+            if name in ctx.pegs
+        }
+        skip = frozenset(n for n in (self.catch,) if n is not None)
+        self.via = peg_detour(me.position, self.target, pegs, skip)
         if self._own_timeout:
-            distance = float(np.linalg.norm(self.target - me.position))
+            path = [me.position, *self.via, self.target]
+            distance = sum(float(np.linalg.norm(q1 - q0)) for q0, q1 in itertools.pairwise(path))
             self.timeout = TIMEOUT_MARGIN + distance / TIMEOUT_SPEED
         self._hold = current_pose(obs)
-        est = ctx.estimator
         self._holds = ctx.graph.index_of("gripper", self.arm) is not None
         self._sensing = self._holds and est.arm == self.arm
         if self.taut and self._holds and not self._sensing:
@@ -185,7 +260,8 @@ class Move(Primitive):
             return Command()
         assert self.force is not None
         me = obs.gripper(self.arm)
-        error = self.target - me.position
+        goal = self.via[0] if self.via else self.target
+        error = goal - me.position
         state = ctx.estimator.update(obs) if self._sensing else None
         follows = (
             self.orientation is None
@@ -201,7 +277,7 @@ class Move(Primitive):
             )
             if along is not None:
                 self._q_target = along
-        desired = with_pose(self._hold, self.arm, Pose(self.target, self._q_target))
+        desired = with_pose(self._hold, self.arm, Pose(goal, self._q_target))
         if state is not None and self.keeps_tension:
             twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
             d = state.direction
@@ -215,6 +291,10 @@ class Move(Primitive):
             twist = ctx.controller(current_pose(obs), desired)
             taut_enough = True
         self.error = float(np.linalg.norm(error))
+        if self.via:
+            if self.error <= self.tolerance:
+                self.via.pop(0)  # over the peg: on to the next way point
+            return Command(twist)
         turn = 2.0 * math.asin(
             min(1.0, float(np.linalg.norm(quaternion_error(self._q_target, me.orientation))))
         )
