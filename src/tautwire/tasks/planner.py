@@ -1629,7 +1629,16 @@ class _Planner:
         )
         self.parked[other] = seat - half * slot
         cable.gripper = seat + half * slot
-        cable.s_contact = grasp + half + 0.5 * clip.length
+        # the pull after the release draws the near span's slack through the
+        # clip (it holds the cable across, not along): the cable then leaves
+        # the clip as far along as the taut span reaches, which is where the
+        # robot's model puts it, and where later grasps are measured from
+        # (random board 1045612557: counted from the grasp, C into F7 left
+        # 28 mm of its slack in the plan's arc lengths; with 36 mm by F9, the
+        # near gripper of C into F10 held 40 mm of slack past peg F9, and the
+        # cable left the peg)
+        entry = seat - 0.5 * clip.length * slot
+        cable.s_contact += float(np.linalg.norm(entry - cable.contact)) + clip.length
         cable.contact = exit_point
         cable.last = clip.name
         self.emit(
@@ -1690,17 +1699,22 @@ class _Planner:
         The straight distance from the fixed point to where that gripper
         is when the cable snaps in (``half`` [m] before the seat along the
         slot, bent down by ``snap`` [rad] from the jaws' top), plus
-        ``NEAR_SLACK``, plus ``BEND_SLACK`` for its turn out of the last
-        clip's slot; at least ``GRASP_MARGIN``.
+        ``NEAR_SLACK``, plus ``BEND_SLACK`` for its turn into the slot's
+        line at that gripper (which holds it along the slot) and for its
+        turn out of the last clip's slot; at least ``GRASP_MARGIN``.
+        Random board 160974418: C into F4 after C into F3, the cable
+        turning 88 deg out of F3's slot and 88 deg into F4's; counted
+        with the turn out of F3 alone, the near span went taut on the way
+        (14.2 N).
         """
         near = seat - half * slot
         near[2] = float(seat[2]) + JAW_TOP - half * math.tan(snap)
         straight = float(np.linalg.norm(near - cable.contact))
-        bend = 0.0
+        way = _unit(_flat(near - cable.contact))
+        bend = 1.0 - float(way @ _unit(_flat(slot)))  # into the slot, at the near gripper
         last = None if cable.last is None else self.fixtures.get(cable.last)
         if last is not None and last.kind == "clip":  # out of the last clip's slot
-            way = _unit(_flat(near - cable.contact))
-            bend = 1.0 - float(way @ _unit(_flat(cable.contact - _vec(last.position))))
+            bend += 1.0 - float(way @ _unit(_flat(cable.contact - _vec(last.position))))
         return max(straight + NEAR_SLACK + BEND_SLACK * bend, GRASP_MARGIN)
 
     def parallel_half_span(
