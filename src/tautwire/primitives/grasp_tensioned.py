@@ -35,6 +35,11 @@ TRAVEL_HEIGHT = 0.15
 TRAVEL_CLEARANCE = 0.04
 #: Horizontal distance [m] to the goal within which the gripper goes straight.
 NEAR = 0.05
+#: Vertical std [m] of the model's chord at the goal above which the goal's
+#: height comes from the measured pull's line instead (see ``_line_height``).
+LINE_HEIGHT_STD = 0.002
+#: Time constant [s] of the low-pass on the measured direction read for that line.
+LINE_TIME_CONSTANT = 0.25
 
 
 class GraspTensioned(Primitive):
@@ -44,7 +49,12 @@ class GraspTensioned(Primitive):
     is the model's interpolated feature point at ``at`` (paper: position by
     linear interpolation between the edge's end points, with the sag of a
     taut span, rho g a^2 delta (1 - delta) / (2 f), added below the chord),
-    recomputed every period as the model updates. The free gripper opens,
+    recomputed every period as the model updates. Where the model's
+    contact is uncertain in height (a peg claimed at its design position,
+    10 mm std), the chord's height at the goal comes from the measured pull
+    instead: the weight-compensated force points from the sensing gripper
+    along the chord to where the cable really leaves the contact
+    (:meth:`_line_height`). The free gripper opens,
     rises to ``TRAVEL_HEIGHT`` (and ``TRAVEL_CLEARANCE`` over the sensing
     gripper, above which the taut cable does not run) where the goal is more
     than ``NEAR`` away horizontally, travels over it there, moves above the
@@ -81,6 +91,7 @@ class GraspTensioned(Primitive):
         self.force = force
         self.phase = "approach"
         self.goal = np.zeros(3)
+        self._line: FloatArray | None = None  # the low-passed pull's direction while taut
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Check that ``at`` lies on the sensing gripper's taut edge."""
@@ -91,6 +102,8 @@ class GraspTensioned(Primitive):
         self.phase = "approach"
         self._phase_since = obs.time
         self._tension: LowPass[float] = LowPass()
+        self._direction: LowPass[FloatArray] = LowPass(LINE_TIME_CONSTANT)
+        self._line = None
         self._hold = current_pose(obs)
         me = obs.gripper(self.arm).position
         self._start = me.copy()
@@ -131,6 +144,9 @@ class GraspTensioned(Primitive):
         i, delta = graph.locate(self.at)
         a, b = graph.points[i].position, graph.points[i + 1].position
         p = lerp(a, b, delta)
+        height = self._line_height(ctx, i, delta, p)
+        if height is not None:
+            p[2] = height
         span = float(np.hypot(*(b - a)[:2]))
         if tension > 0.1:
             p[2] -= graph.mass_per_length * GRAVITY * span**2 * delta * (1 - delta) / (2 * tension)
@@ -138,12 +154,53 @@ class GraspTensioned(Primitive):
         along[2] = 0.0
         return p, turn_x_onto_line(orientation, along)
 
+    def _line_height(
+        self, ctx: PrimitiveContext, i: int, delta: float, p: FloatArray
+    ) -> float | None:
+        """The chord's height [m] at ``p`` along the measured pull, where the model's is uncertain.
+
+        The model's chord runs from its contact to the sensing gripper; a
+        contact whose height the model does not know well (std ``sigma``)
+        leaves the chord ``(1 - w) sigma`` uncertain at the goal, ``w`` the
+        goal's fraction of the way from the contact to the gripper. Above
+        ``LINE_HEIGHT_STD`` the height comes from the line through the
+        sensing gripper along the low-passed weight-compensated pull (the
+        chord's direction to where the cable leaves the contact), at the
+        goal's horizontal distance. Random board 1045612557: C into F10
+        after peg F9 (claimed at its design position, 10 mm std), the model
+        put the grasp 5.5 mm above the cable and the fingers' lower lips
+        pushed it out as they closed (``missed``, 14.6 N true).
+
+        Returns:
+            The height [m], or None (the model's chord is kept).
+        """
+        if self._line is None:
+            return None
+        g = ctx.estimator.gripper_index
+        if g is None or g not in (i, i + 1):
+            return None
+        contact = ctx.graph.points[i + 1 if g == i else i]
+        if contact.covariance is None:
+            return None
+        weight = delta if g == i else 1.0 - delta  # the contact's share of the goal
+        if weight * math.sqrt(max(float(contact.covariance[2, 2]), 0.0)) <= LINE_HEIGHT_STD:
+            return None
+        grip = ctx.graph.points[g].position
+        u = self._line
+        run = math.hypot(float(u[0]), float(u[1]))
+        if run < 0.3:  # steeper than 73 deg: the horizontal distance says little
+            return None
+        d = math.hypot(*(p - grip)[:2])
+        return float(grip[2]) + float(u[2]) * d / run
+
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Keep the tension, approach, descend, close, confirm, record."""
         assert self.force is not None
         state = ctx.estimator.update(obs)
         if self.outcome.done:
             return Command()
+        if state.taut:
+            self._line = self._direction.update(obs.time, state.direction)
         sensing = ctx.estimator.arm
         tension = self._tension.update(obs.time, state.tension)  # the fingers shake the cable
         me = obs.gripper(self.arm)
