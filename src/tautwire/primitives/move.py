@@ -36,7 +36,7 @@ TIMEOUT_MARGIN = 8.0
 TENSION_FRACTION = 0.5
 #: Horizontal clearance [m] beyond a peg's radius inside which a gripper passing
 #: the peg below ``PEG_ABOVE`` over its top would strike it with its fingers or
-#: the cable they hold (the planner's gripper clearance).
+#: the cable they hold (the planner plans with the same clearance).
 PEG_CLEARANCE = 0.02
 #: Height [m] over a peg's top at which the tool centre point passes it (the pads
 #: reach 8 mm below it).

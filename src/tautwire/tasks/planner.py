@@ -57,6 +57,7 @@ from tautwire.primitives.clip_sensing import (
     far_rise,
     push_tension,
 )
+from tautwire.primitives.move import PEG_ABOVE, PEG_CLEARANCE
 from tautwire.primitives.parallel_clipping import ABOVE as PARALLEL_ABOVE
 from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
 from tautwire.primitives.single_arm_clipping import (
@@ -102,8 +103,9 @@ PEG_LEAD = 0.08
 #: span into the peg (the fingers would catch it).
 FINGER_CLEARANCE = 0.03
 #: Least horizontal distance [m] of the tool centre point from a fixture's body it
-#: passes lower than ``GRIPPER_ABOVE`` over its top (fingers and pads).
-GRIPPER_CLEARANCE = 0.02
+#: passes lower than ``GRIPPER_ABOVE`` over its top (fingers and pads); a move
+#: at run time keeps the same clearance from a peg (``move.PEG_CLEARANCE``).
+GRIPPER_CLEARANCE = PEG_CLEARANCE
 #: Length [m] of the free tail beyond the gripper that runs on at its height,
 #: along the span, before it droops (the pads' 10 mm and about as much
 #: again): it must clear the board like the taut cable. The shipped
@@ -113,8 +115,9 @@ GRIPPER_CLEARANCE = 0.02
 #: off, 6 mm over its top, unharmed.
 TAIL_REACH = 0.025
 #: Height [m] over a fixture's top at which the tool centre point passes it (the
-#: harness board's slides pass clips 19 mm over their jaws unharmed).
-GRIPPER_ABOVE = 0.015
+#: harness board's slides pass clips 19 mm over their jaws unharmed; a move at
+#: run time rises as high over a peg in its way, ``move.PEG_ABOVE``).
+GRIPPER_ABOVE = PEG_ABOVE
 #: The name of the collision of a winding gripper with its cable's span into the peg.
 OWN_SPAN = "the cable's own span"
 #: Horizontal room [m] a slide leaves between where it ends and the reach of
