@@ -802,7 +802,7 @@ def test_the_near_grasp_of_a_parallel_clip_counts_the_cable_as_the_model_does(
     # grasps are measured in) counts the cable along the taut span. Counted
     # from C's grasp instead, the plan carried F7's slack into its arc
     # lengths (28 mm), so the near grasp for F10 held that too past peg F9
-    # (46 mm for a 110 mm span): the cable left the peg. Each C's near
+    # (45 mm for a 110 mm span): the cable left the peg. Each C's near
     # span now holds its own slack only: 10 mm more NEAR_SLACK moves the
     # second grasp by 10 mm, not 20.
     scenario = draw_board(1045612557).scenario

@@ -1638,7 +1638,7 @@ class _Planner:
         # robot's model puts it, and where later grasps are measured from
         # (random board 1045612557: counted from the grasp, C into F7 left
         # 28 mm of its slack in the plan's arc lengths; with 36 mm by F9, the
-        # near gripper of C into F10 held 40 mm of slack past peg F9, and the
+        # near gripper of C into F10 held 45 mm of slack past peg F9, and the
         # cable left the peg)
         entry = seat - 0.5 * clip.length * slot
         cable.s_contact += float(np.linalg.norm(entry - cable.contact)) + clip.length
