@@ -60,3 +60,19 @@ def test_lines_that_do_not_rest_on_the_peg() -> None:
     # the old contact lies between the gripper and the peg
     near_contact = p + 0.1 * (f / np.linalg.norm(f))
     assert line_meets_peg(p, f, Z, 1.0, AXIS_POINT, R, near_contact) is None
+
+
+@pytest.mark.parametrize("sense", [1.0, -1.0])
+@pytest.mark.parametrize("slope", [-0.6, -0.2, 0.3, 0.8])
+def test_a_sloped_tangent_line_meets_the_peg_at_its_height(slope: float, sense: float) -> None:
+    # a gripper above or below the peg: the line is tangent in the top view,
+    # and meets the axis where it passes it (the miss measured normal to the
+    # axis, not along the sloped line: 6 mm off at a 0.2 rad slope over 0.15 m)
+    p, f = tangent_line(0.7, sense, distance=0.15)
+    rise = slope * 0.15
+    p = p + np.array([0.0, 0.0, rise])
+    f = f - np.array([0.0, 0.0, rise]) * np.linalg.norm(f) / 0.15
+    far_contact = AXIS_POINT + 0.2 * (f / np.linalg.norm(f))
+    meet = line_meets_peg(p, f, Z, sense, AXIS_POINT, R, far_contact, 1e-6)
+    assert meet is not None
+    assert np.allclose(meet[:2], AXIS_POINT[:2]) and meet[2] == pytest.approx(AXIS_POINT[2])

@@ -416,3 +416,53 @@ def test_a_nearly_straight_path_has_no_centre_to_contradict_the_lines() -> None:
         est._sample_path(2.0 + 0.04 * k, CONTACT + 0.3 * np.array([np.cos(a), np.sin(a), 0.0]), 3.0)
     assert est._path_estimate is not None
     assert float(np.linalg.norm(est._path_estimate[0][:2] - CONTACT[:2])) < 0.01
+
+
+@pytest.mark.parametrize("over_top", [-0.02, 0.0, 0.004, 0.012, 0.03])
+def test_a_line_that_passes_over_a_peg_does_not_make_it_the_contact(over_top: float) -> None:
+    # random board 787338652 (seed 7): I about F4 swept the gripper past F5;
+    # a line from the gripper to F4, tangent to F5 in the top view, passed
+    # 10 mm over F5's top and made it a contact, which the filter then pulled
+    # 10 mm beside F4 (not_wound). A cable bears on a peg's side or rim: its
+    # centre no higher than the top plus its radius (and the line's error)
+    from tautwire.estimation.round_contact import line_meets_peg
+    from tautwire.primitives.model_estimator import LINE_HEIGHT_TOLERANCE
+
+    R, r_peg, top = 0.006, 0.003, 0.10  # the peg's and cable's radius R, the peg's own
+    axis = np.array([0.0, 0.0, 1.0])
+    p_g = np.array([0.4, 0.0, 0.0])
+    p_g[2] = 2.0 * (top + over_top) - CONTACT[2]  # the chord's height halfway is top + over_top
+    f = CONTACT - p_g  # the pull along the chord to the anchor
+    for sense in (1.0, -1.0):  # the peg R beside the chord, on the rotation's side
+        peg = np.array([0.25, 0.0, 0.05])
+        for side in (R, -R):
+            peg[1] = side
+            meet = line_meets_peg(p_g, f, axis, sense, peg, R, CONTACT, 1e-4)
+            if meet is not None:
+                break
+        if meet is not None:
+            break
+    assert meet is not None and meet[2] == pytest.approx(top + over_top)
+    ctx = make_context_with_peg(peg, R)
+    est = ctx.estimator
+    est.peg_tops, est.peg_radii = {"P1": top}, {"P1": r_peg}
+    est.rotation = (axis, sense)
+    est.contact_filter.start(CONTACT.copy(), 1e-6 * np.eye(3))
+    changed = est._peg_change(p_g, f, 1e-4)
+    touches = over_top <= (R - r_peg) + LINE_HEIGHT_TOLERANCE
+    assert changed == touches, (over_top, changed)
+    labels = [p.label for p in ctx.graph.points]
+    assert labels == (["A1", "P1", "left"] if touches else ["A1", "left"]), labels
+
+
+def make_context_with_peg(peg: np.ndarray, radius: float):  # type: ignore[no-untyped-def]
+    from tautwire.primitives import make_context
+    from tests.primitives.conftest import graph_for
+
+    return make_context(
+        graph_for(),
+        "left",
+        k_initial=100.0,
+        estimation_period=0.04,
+        round_fixtures={"P1": (peg.copy(), radius)},
+    )

@@ -122,16 +122,21 @@ def line_meets_peg(
     if fn < 1e-9:
         return None
     u = force / fn  # from the gripper towards the contact
+    u_across = u - axis * float(axis @ u)  # the line's direction normal to the axis
+    n_across = norm3(u_across)
+    if n_across < 1e-9:
+        return None  # a line along the axis meets no peg side
+    e = u_across / n_across
     q = shift_onto_axis(p_gripper, force, axis, sense, radius)
     to_axis = axis_point - q
     across = to_axis - axis * float(axis @ to_axis)  # to the axis, normal to it
-    along = float(u @ across)
-    miss = across - u * along  # the shifted line's miss distance, normal to the axis
-    miss = miss - axis * float(axis @ miss)
+    along = float(e @ across)  # normal to the axis, to where the line passes it
+    miss = across - e * along  # the shifted line's miss distance, normal to the axis
     if norm3(miss) > tolerance:
         return None
-    if not 0.0 < along < float(u @ (contact - p_gripper)):
+    t = along / n_across  # along the (sloped) line to the same place
+    if not 0.0 < t < float(u @ (contact - p_gripper)):
         return None  # behind the gripper, or beyond the old contact
-    line_point = q + along * u
+    line_point = q + t * u
     meet: FloatArray = axis_point + axis * float(axis @ (line_point - axis_point))
     return meet

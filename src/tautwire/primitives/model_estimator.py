@@ -157,6 +157,10 @@ UNSEEN_MOTION = 0.005
 #: cable passes over it (random board 1652323633: lines meeting 32 mm above
 #: F2's top while the cable wound F1 made F2 the contact).
 PEG_TOP_MARGIN = 0.01
+#: A line tangent to a peg in the top view meets it only if its height at
+#: the axis is at most this much [m] over the top plus the cable's radius
+#: (the line's direction error over the span from the gripper).
+LINE_HEIGHT_TOLERANCE = 0.003
 #: The route through a candidate may differ from the cable's length by this
 #: much [m], plus a fraction of it, plus the stretch of the tension's change
 #: and ``ROUTE_FRICTION`` of the stretch at the tension (friction at the new
@@ -1579,7 +1583,7 @@ class ModelEstimator:
             if name == label or self._over_peg(name, kf.x):
                 continue
             meet = line_meets_peg(p_g, f, axis, sense, axis_point, radius, kf.x, tolerance)
-            if meet is None:
+            if meet is None or self._line_over_peg(name, meet, radius):
                 continue
             q = shift_onto_axis(p_g, f, axis, sense, radius)
             kf.declare_change(
@@ -1760,6 +1764,25 @@ class ModelEstimator:
         """Whether ``x`` [m] lies more than ``PEG_TOP_MARGIN`` above peg ``name``'s top."""
         top = self.peg_tops.get(name)
         return top is not None and float(x[2]) > top + PEG_TOP_MARGIN
+
+    def _line_over_peg(self, name: str, meet: FloatArray, radius: float) -> bool:
+        """Whether a line passes over peg ``name``: its height at the axis, ``meet`` [m], too high.
+
+        A cable bears on a peg's side, or at most on its rim: its centre line
+        lies no higher than the top plus the cable's radius (``radius`` [m],
+        the peg's and the cable's radius and ``RADIUS_MARGIN``, less the
+        peg's own radius), plus ``LINE_HEIGHT_TOLERANCE`` for the line's
+        direction. Random board 787338652 (seed 7): I about F4 swept the
+        gripper past F5, the next peg of the route; a line from the gripper
+        to F4, tangent to F5 in the top view, passed 10 mm over F5's top, and
+        F5 became an "estimated" contact that the filter then pulled 10 mm
+        beside F4: the winding ended ``not_wound``.
+        """
+        top = self.peg_tops.get(name)
+        if top is None:
+            return False
+        rim = radius - self.peg_radii.get(name, 0.0)
+        return float(meet[2]) > top + rim + LINE_HEIGHT_TOLERANCE
 
     def _add_contact(self, estimate: FloatArray, p_g: FloatArray) -> bool:
         """A new contact between the old one and the gripper: add its feature point."""
