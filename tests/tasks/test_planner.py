@@ -675,7 +675,7 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first(
     assert not any(s.why.startswith("lift the cable clear") for s in p.steps)
 
 
-def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first(
+def test_a_slide_straight_on_over_its_next_clip_passes_it_clear_first(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
     """The fingers must clear the clip the slide brings cable towards, not only the others.
@@ -699,12 +699,17 @@ def test_a_slide_straight_on_over_its_next_clip_lifts_the_fingers_clear_first(
     # from F5's exit, ran 16 mm lower over F6 and its tail caught in the jaws)
     seat = np.array([0.35, 0.10, 0.08])
     way = (start - seat) / float(np.linalg.norm(start - seat))
-    # where it comes within a finger's reach of C2 (x = 0.50; 5 mm inside the
-    # band, for the planner's sampling of the path) the tool centre point
-    # passes GRIPPER_ABOVE over its jaws
-    x = 0.50 - 0.015 - planner.GRIPPER_CLEARANCE + 0.005
-    over = start + way * (x - float(start[0])) / float(way[0])
-    assert float(over[2]) >= 0.08 + 0.008 + planner.GRIPPER_ABOVE
+    end = start + way * float(slide.params["distance"])  # type: ignore[arg-type]
+    # the 0.9 m cable's tail hangs from the fingers to the board: the slide
+    # passes C2 (x = 0.50) beside it, the fingers and the tail clear of its
+    # jaws, rather than over them (random board 1695658280: the tail lay on
+    # a clip under the slide and the fingers lost the cable)
+    c2 = np.array([0.50, 0.10])
+    a, b = start[:2], end[:2]
+    t = float(np.clip((c2 - a) @ (b - a) / float((b - a) @ (b - a)), 0.0, 1.0))
+    gap = float(np.linalg.norm(a + t * (b - a) - c2))
+    assert gap >= 0.015 + 0.0025 + planner.HANGING_TAIL_CLEAR
+    assert gap >= 0.015 + planner.GRIPPER_CLEARANCE
     # with that clip 45 mm aside of the slide's line, no lift
     aside = BoardFixture("C2", "clip", (0.50, 0.145, 0.08), yaw=0.32, push_force=2.5, length=0.03)
     board = (*(f for f in BOARD if f.name != "C2"), aside)
@@ -820,3 +825,96 @@ def test_the_near_grasp_of_a_parallel_clip_counts_the_cable_as_the_model_does(
     assert len(before) == len(after) == 2
     assert after[0] - before[0] == pytest.approx(0.01, abs=1e-6)
     assert after[1] - before[1] == pytest.approx(0.01, abs=1e-6)
+
+
+def _planned_states(
+    monkeypatch: pytest.MonkeyPatch, seed: int
+) -> list[tuple[str, str, dict[str, object], np.ndarray, np.ndarray, float, str | None]]:
+    """(cable, primitive, params, gripper, contact, free, last) at each planned step.
+
+    The state is read when the step is emitted: before the planner moves
+    its gripper to where the step leaves it.
+    """
+    states: list[tuple[str, str, dict[str, object], np.ndarray, np.ndarray, float, str | None]]
+    states = []
+    scenario = draw_board(seed).scenario  # drawing plans too: not recorded
+    emit = planner._Planner.emit
+
+    def spy(self, cable, primitive, why, **params):  # type: ignore[no-untyped-def]
+        states.append(
+            (
+                cable.spec.name,
+                primitive,
+                dict(params, why=why),
+                cable.gripper.copy(),
+                cable.contact.copy(),
+                cable.free,
+                cable.last,
+            )
+        )
+        emit(self, cable, primitive, why, **params)
+
+    monkeypatch.setattr(planner._Planner, "emit", spy)
+    plan_scenario(scenario)
+    return states
+
+
+def test_after_a_parallel_clip_the_far_gripper_is_planned_where_the_pull_takes_it(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # random board 1695658280: after C into F5 the pull drew the near span's
+    # slack through the clip (100 mm of cable past F5's exit), but the plan
+    # kept the far gripper where C left it, 45 mm out; the lift before the
+    # slide for F6 ended 58 mm further on than planned, and the slide ran
+    # the gripper into W1's clip F2 (14.2 N)
+    states = _planned_states(monkeypatch, 1695658280)
+    after = [
+        states[k + 1]
+        for k, s in enumerate(states[:-1])
+        if s[2]["why"] == "keep the cable taut from the clip"
+    ]
+    assert len(after) == 2  # C into F4 and F5
+    for _, _, _, gripper, contact, free, _ in after:
+        assert float(np.linalg.norm(gripper - contact)) == pytest.approx(free, abs=1e-9)
+
+
+def test_a_slide_keeps_its_hanging_tail_off_the_fixtures_under_its_way() -> None:
+    from tautwire.tasks.planner import HANGING_TAIL_CLEAR, hanging_tail_collision
+
+    clip = BoardFixture("F2", "clip", (0.31, 0.06, 0.08), yaw=0.0, length=0.03)
+    top = 0.08 + planner.JAW_TOP
+    fixtures = (clip,)
+    radius = 0.0025
+    start, end = np.array([0.318, 0.0, 0.10]), np.array([0.318, 0.13, 0.12])
+    hit = hanging_tail_collision(start, end, 0.5, fixtures, radius)
+    assert hit is not None and hit.fixture == "F2" and hit.by == "cable's free tail"
+    assert hanging_tail_collision(start, end, 0.5, fixtures, radius, frozenset({"F2"})) is None
+    # a tail shorter than the gripper's height over the top hangs clear
+    assert hanging_tail_collision(start, end, 0.9 * (0.109 - top), fixtures, radius) is None
+    # passing beside it, just out of the tail's room, and just within it
+    room = 0.015 + radius + HANGING_TAIL_CLEAR
+    for gap, hits in ((room + 1e-3, False), (room - 1e-3, True)):
+        side = np.array([0.31 + gap, 0.0, 0.0])
+        a, b = np.append(side[:2], 0.10), np.append(side[:2] + np.array([0.0, 0.13]), 0.12)
+        assert (hanging_tail_collision(a, b, 0.5, fixtures, radius) is not None) == hits
+
+
+def test_random_board_1695658280_slides_round_w1_s_clip(monkeypatch: pytest.MonkeyPatch) -> None:
+    # the slide out of F5 towards F6 ran straight over W1's clip F2 (the
+    # tail lay on it, the fingers lost the cable): it now starts turned aside
+    from tautwire.tasks.planner import HANGING_TAIL_CLEAR
+
+    scenario = draw_board(1695658280).scenario
+    f2 = next(f for f in scenario.board.fixtures if f.name == "F2")
+    states = _planned_states(monkeypatch, 1695658280)
+    slides = [k for k, s in enumerate(states) if s[1] == "single_arm_sliding" and s[0] == "W2"]
+    assert slides
+    for k in slides:
+        before = states[k - 1]  # the move that lifts the gripper before it, if any
+        start = np.asarray(before[2]["to"]) if before[1] == "move" else states[k][3]
+        end = states[k + 2][3]  # after the slide and the pull after it
+        a, b = start[:2], end[:2]
+        p = np.asarray(f2.position[:2])
+        t = float(np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0))
+        gap = float(np.linalg.norm(a + t * (b - a) - p))
+        assert gap > 0.015 + 0.0025 + HANGING_TAIL_CLEAR, (k, gap)

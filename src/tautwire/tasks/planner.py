@@ -114,6 +114,14 @@ GRIPPER_CLEARANCE = PEG_CLEARANCE
 #: the pull, 2.7 N, while the span went slack; W1's tail passes C3 44 mm
 #: off, 6 mm over its top, unharmed.
 TAIL_REACH = 0.025
+#: Horizontal room [m], beyond a fixture's body and the cable's radius, that
+#: the free tail hanging from a sliding gripper must keep from a fixture it
+#: could hang onto: the slide runs the fingers along the cable over where
+#: the tail lies (random board 1695658280: W2's slide out of F5 ran the
+#: gripper 16 mm over W1's clip F2; the tail, 0.5 m of it hanging from the
+#: fingers, lay on F2, the pull through the fingers rose to 5.8 N, the
+#: grip-force control opened the fingers and the cable fell out of them).
+HANGING_TAIL_CLEAR = 0.01
 #: Height [m] over a fixture's top at which the tool centre point passes it (the
 #: harness board's slides pass clips 19 mm over their jaws unharmed; a move at
 #: run time rises as high over a peg in its way, ``move.PEG_ABOVE``).
@@ -542,6 +550,38 @@ def tail_collision(
     if hit is None:
         return None
     return Collision(hit.fixture, hit.height, hit.needed, "cable's free tail")
+
+
+def hanging_tail_collision(
+    start: FloatArray,
+    end: FloatArray,
+    tail: float,
+    fixtures: tuple[BoardFixture, ...],
+    cable_radius: float,
+    skip: frozenset[str] = frozenset(),
+) -> Collision | None:
+    """The fixture (if any) under a slide from ``start`` to ``end`` [m] that its hanging tail meets.
+
+    The ``tail`` [m] of cable beyond the fingers hangs from them: a
+    fixture whose body lies within :data:`HANGING_TAIL_CLEAR` (plus the
+    cable's radius) of the gripper's way in the top view, with its top
+    less than the tail's length below the gripper, is in the tail's way.
+    """
+    a, b = _flat(start), _flat(end)
+    ab = b - a
+    for fixture in fixtures:
+        top = fixture_top(fixture)
+        if top is None or fixture.name in skip:
+            continue
+        p = _flat(_vec(fixture.position))
+        t = _along(a, b, p)
+        gap = float(np.linalg.norm(a + t * ab - p))
+        if gap > fixture_reach(fixture) + cable_radius + HANGING_TAIL_CLEAR:
+            continue
+        height = float(start[2]) + t * float(end[2] - start[2])
+        if height - top < tail:
+            return Collision(fixture.name, height, top + tail, "cable's free tail")
+    return None
 
 
 def parked_collision(
@@ -1191,6 +1231,22 @@ class _Planner:
             return None
         return tail_collision(gripper, pivot, self.problem.fixtures, cable.spec.radius, skip)
 
+    def hanging_tail_hit(
+        self, cable: _Cable, start: FloatArray, end: FloatArray, distance: float
+    ) -> Collision | None:
+        """:func:`hanging_tail_collision` for a slide of ``distance`` [m] from ``start`` to ``end``.
+
+        The tail is what is left past the gripper at the slide's end; the
+        fixture the cable leaves (and any overlapping it) is not checked.
+        """
+        tail = cable.spec.length - cable.at - distance
+        if tail <= TAIL:
+            return None
+        skip = self.overlapping(frozenset(n for n in (cable.last,) if n is not None))
+        return hanging_tail_collision(
+            start, end, tail, self.problem.fixtures, cable.spec.radius, skip
+        )
+
     def short_of(self, peg: BoardFixture, following: RouteEntry | None) -> float:
         """Angle [rad] by which a winding stops short of pointing at the next entry, a clip.
 
@@ -1651,6 +1707,14 @@ class _Planner:
             arm=cable.arm,
             force=self.problem.tension,
         )
+        # ... and the far gripper with it, to where that span is taut (random
+        # board 1695658280: planned from where C left it, 45 mm from F5's
+        # exit with 100 mm of cable past it, the lift before the slide for F6
+        # ended 58 mm further on, and the slide ran the gripper into W1's
+        # clip F2: 14.2 N)
+        out = cable.gripper - exit_point
+        if float(np.linalg.norm(out)) < cable.free:
+            cable.gripper = exit_point + _unit(out) * cable.free
 
     def require_clear_pair(
         self, cable: _Cable, clip: BoardFixture, slot: FloatArray, half: float, grasp: float
@@ -1803,7 +1867,10 @@ class _Planner:
         # along F2's slot, over F3 126 mm on, and pulled 25 N
         fingers = frozenset(n for n in (cable.last,) if n is not None)
         low = self.slide_end(cable, start, distance)
-        if self.path_collision(cable, cable.contact, start, [low], skip, fingers) is not None:
+        if (
+            self.path_collision(cable, cable.contact, start, [low], skip, fingers) is not None
+            or self.hanging_tail_hit(cable, start, low, distance) is not None
+        ):
             lifted = self.slide_lift(cable, start, distance, skip, fingers)
             if lifted is not None:
                 self.emit_move(
@@ -1815,6 +1882,14 @@ class _Planner:
         self.require_clear(
             cable, cable.contact, start, [low], "sliding the cable out", cable.fixture, True
         )
+        hit = self.hanging_tail_hit(cable, start, low, distance)
+        if hit is not None:
+            raise self.fail(
+                cable,
+                f"sliding the cable out takes the {hit.by}, hanging from the gripper, over "
+                f"{hit.fixture} (expected the gripper's way clear of every fixture the tail "
+                "could hang onto)",
+            )
         self.emit(
             cable,
             "single_arm_sliding",
@@ -1880,6 +1955,7 @@ class _Planner:
                     and self.robot.reach.contains([float(v) for v in out])
                     and self.path_collision(cable, c, start, [lifted, out], skip, gripper_skip)
                     is None
+                    and self.hanging_tail_hit(cable, lifted, out, distance) is None
                 ):
                     return lifted
         return None
