@@ -14,9 +14,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from tautwire.cli.main import main
-from tautwire.experiments.harness_boards import draw_board
 from tautwire.robot.workspace import WORKSPACE
-from tautwire.scenario import parse_scenario
+from tautwire.scenario import Scenario, parse_scenario
+from tautwire.scenario.loader import load_scenario
 from tautwire.scenario.route_problem import plan_scenario, route_problem, task_yaml
 from tautwire.tasks import planner
 from tautwire.tasks.planner import (
@@ -53,6 +53,15 @@ BOARD = (
     BoardFixture("EDGE", "peg", (0.74, 0.20, 0.05), radius=0.006, height=0.06),
     BoardFixture("FAR", "peg", (0.60, -0.45, 0.05), radius=0.006, height=0.06),
 )
+
+
+def _board(seed: int) -> Scenario:
+    """Random board ``seed`` as it was drawn when its test was written (``data/``).
+
+    A board's draw depends on what the planner accepts: stored, the
+    board stays the one the test was written for when the planner changes.
+    """
+    return load_scenario(Path(__file__).parent / "data" / f"board_{seed}.yaml")
 
 
 def cable(name: str, route: list[RouteEntry], **changes: object) -> CableToRoute:
@@ -785,11 +794,42 @@ def test_a_clip_the_cable_rises_to_too_steeply_for_f_gets_c_or_is_refused() -> N
     assert "holds W2" in err.reason and "\n" not in str(err)
 
 
+def test_f_is_planned_only_with_a_margin_under_its_own_rise_limit(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """F judges the rise on the model's contact, whose height on a peg is an estimate.
+
+    Random board 1348249889: planned at 12.99 deg from F4's leave point
+    (F's limit 13), F measured 14.1 deg and refused (``precondition``).
+    """
+    import re
+
+    cp = BoardFixture("CP", "clip", (0.31, 0.11, 0.08), yaw=-0.12, push_force=2.5, length=0.03)
+    board = (*BOARD, cp)
+    wound = cable("W1", [RouteEntry("P1", "left", wind=1), RouteEntry("CP")], length=1.0)
+    busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    with pytest.raises(RouteError) as info:
+        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
+    found = re.search(r"rises ([0-9.]+) deg", info.value.reason)
+    assert found is not None
+    rise = float(found.group(1))
+    # F's limit just above the rise: within the margin, refused
+    monkeypatch.setattr(planner, "MAX_FAR_RISE", math.radians(rise + 0.5))
+    with pytest.raises(RouteError, match="planned with 1 deg to spare"):
+        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
+    # ... and beyond it, F is planned (here it goes on to find the sweep over
+    # CP too low by 1 mm for C1: F's own step, not the rise, refuses it)
+    monkeypatch.setattr(planner, "MAX_FAR_RISE", math.radians(rise + 1.1))
+    with pytest.raises(RouteError) as info:
+        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
+    assert "bringing the cable over the clip" in info.value.reason, info.value.reason
+
+
 def test_a_slide_the_tail_cuts_to_a_few_millimetres_is_left_out() -> None:
     # random board 1652323633: W1's slide before F2 needed 1.1 mm; every
     # longer one would have laid the hanging tail on a fixture, so the
     # planner emitted a 1.1 mm slide, which ended before E judged anything
-    plan = plan_scenario(draw_board(1652323633).scenario)
+    plan = plan_scenario(_board(1652323633))
     slides = [
         float(s.params["distance"])  # type: ignore[arg-type]
         for s in plan.steps
@@ -810,7 +850,7 @@ def test_the_near_grasp_of_a_parallel_clip_counts_the_cable_as_the_model_does(
     # (45 mm for a 110 mm span): the cable left the peg. Each C's near
     # span now holds its own slack only: 10 mm more NEAR_SLACK moves the
     # second grasp by 10 mm, not 20.
-    scenario = draw_board(1045612557).scenario
+    scenario = _board(1045612557)
 
     def grasps(near_slack: float) -> list[float]:
         monkeypatch.setattr(planner, "NEAR_SLACK", near_slack)
@@ -837,7 +877,7 @@ def _planned_states(
     """
     states: list[tuple[str, str, dict[str, object], np.ndarray, np.ndarray, float, str | None]]
     states = []
-    scenario = draw_board(seed).scenario  # drawing plans too: not recorded
+    scenario = _board(seed)
     emit = planner._Planner.emit
 
     def spy(self, cable, primitive, why, **params):  # type: ignore[no-untyped-def]
@@ -904,7 +944,7 @@ def test_random_board_1695658280_slides_round_w1_s_clip(monkeypatch: pytest.Monk
     # tail lay on it, the fingers lost the cable): it now starts turned aside
     from tautwire.tasks.planner import HANGING_TAIL_CLEAR
 
-    scenario = draw_board(1695658280).scenario
+    scenario = _board(1695658280)
     f2 = next(f for f in scenario.board.fixtures if f.name == "F2")
     states = _planned_states(monkeypatch, 1695658280)
     slides = [k for k, s in enumerate(states) if s[1] == "single_arm_sliding" and s[0] == "W2"]
