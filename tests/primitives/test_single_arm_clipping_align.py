@@ -79,3 +79,26 @@ def test_the_far_contact_moves_onto_the_measured_line() -> None:
     far = CONTACT + np.array([0.0, 0.02, 0.0])
     shift = g._measured_shift(0.0, leaves, (far - leaves) / np.linalg.norm(far - leaves))
     assert np.allclose(shift, 0.0)
+
+
+@pytest.mark.parametrize("slot_side", [1.0, -1.0])
+def test_a_line_bent_out_of_a_clip_passes_its_exit_on_the_slot_s_side_only(
+    slot_side: float,
+) -> None:
+    # a stiff cable bent out of the clip before runs straight on from a
+    # virtual corner ahead of the exit, along that clip's slot: its line
+    # passes the exit on the slot's side. Random board 1986348794's F5, 24
+    # deg on from F4: the measured line read 4.2 mm beside the exit on the
+    # other side, F aimed from there and the cable went down beside the clip
+    f = _aligning(np.zeros(3))
+    f._bent_exit = True
+    f._exit_way = np.array([np.cos(0.42), slot_side * np.sin(0.42), 0.0])  # out of F4's slot
+    pivot = CONTACT + np.array([0.0, 0.004, 0.0])  # the measured line passes 4 mm to +y
+    leaves = np.array([0.45, 0.02, 0.12])
+    pull = (pivot - leaves) / np.linalg.norm(pivot - leaves)
+    for k in range(100):
+        f._line_shift = f._measured_shift(0.004 * k, leaves, pull)
+    if slot_side > 0:  # the slot turns to +y: the reading is on its side, taken
+        assert np.linalg.norm(f._line_shift - np.array([0.0, 0.004, 0.0])) < 2e-4
+    else:  # the other side: the line's own error, no shift
+        assert np.allclose(f._line_shift, 0.0)

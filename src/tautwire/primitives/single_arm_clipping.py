@@ -159,6 +159,8 @@ class SingleArmClipping(Primitive):
         self._line_shift_filter: LowPass[np.ndarray] = LowPass(EXIT_TIME)
         self._line_rise = 0.0  # a peg's leave point up onto the measured line [m]
         self._line_rise_filter: LowPass[float] = LowPass(EXIT_TIME)
+        self._bent_exit = False  # the cable bends out of a clip (set at the start)
+        self._exit_way = np.zeros(3)  # along that clip's slot, out of its exit (horizontal)
 
     def on_start(self, obs: Observation, ctx: PrimitiveContext) -> None:
         """Check the clip against the model; plan the pivot plane."""
@@ -195,6 +197,7 @@ class SingleArmClipping(Primitive):
         self._lead = 0.0  # cable [m] from the contact's model point to where it leaves it
         self._shifts = True  # the far contact moves onto the measured line (not from a peg)
         self._bent_exit = False  # the cable bends out of a clip: align at the push's tension
+        self._exit_way = np.zeros(3)  # along that clip's slot, out of its exit (horizontal)
         self._swing = SlotSwing(0.0, JAW_TOP)  # onto the slot once on the jaws (set at the push)
         self._on_line = np.zeros(3)  # over the exit on the aimed line (set at the push) [m]
         if info is None:
@@ -289,6 +292,9 @@ class SingleArmClipping(Primitive):
             # before it reached the jaws, and it slid off)
             self._bent_exit = True
             self._lead = norm3(exit_point - clip_before.position)  # cable in its jaws [m]
+            way = exit_point - clip_before.position
+            way[2] = 0.0
+            self._exit_way = way / max(float(np.linalg.norm(way)), 1e-9)
             return exit_point
         if label not in est.round_fixtures:
             if label in ctx.fixtures and ctx.graph.points[i].kind == "fixed":  # type: ignore[index]
@@ -382,6 +388,15 @@ class SingleArmClipping(Primitive):
         shift: np.ndarray = -float(away @ n) * n
         if float(np.linalg.norm(shift)) > MAX_LINE_SHIFT:
             return self._line_shift
+        if self._bent_exit and float(shift @ self._exit_way) < 0.0:
+            # a cable bent out of a clip's slot runs straight on from a
+            # virtual corner ahead of the exit, along the slot: its line
+            # passes the exit on the slot's side, never the other (random
+            # board 1986348794's F5, 24 deg on from F4: the measured line
+            # read 4.2 mm beside the exit the other way, F aimed there, the
+            # cable met the jaws 2.8 mm beside the slot and went down beside
+            # the clip); a reading on the wrong side is the line's error
+            shift = np.zeros(3)
         return self._line_shift_filter.update(time, shift)
 
     def _measured_rise(self, time: float, leaves: np.ndarray, direction: np.ndarray) -> float:
