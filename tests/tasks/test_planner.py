@@ -794,37 +794,6 @@ def test_a_clip_the_cable_rises_to_too_steeply_for_f_gets_c_or_is_refused() -> N
     assert "holds W2" in err.reason and "\n" not in str(err)
 
 
-def test_f_is_planned_only_with_a_margin_under_its_own_rise_limit(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    """F judges the rise on the model's contact, whose height on a peg is an estimate.
-
-    Random board 1348249889: planned at 12.99 deg from F4's leave point
-    (F's limit 13), F measured 14.1 deg and refused (``precondition``).
-    """
-    import re
-
-    cp = BoardFixture("CP", "clip", (0.31, 0.11, 0.08), yaw=-0.12, push_force=2.5, length=0.03)
-    board = (*BOARD, cp)
-    wound = cable("W1", [RouteEntry("P1", "left", wind=1), RouteEntry("CP")], length=1.0)
-    busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
-    with pytest.raises(RouteError) as info:
-        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
-    found = re.search(r"rises ([0-9.]+) deg", info.value.reason)
-    assert found is not None
-    rise = float(found.group(1))
-    # F's limit just above the rise: within the margin, refused
-    monkeypatch.setattr(planner, "MAX_FAR_RISE", math.radians(rise + 0.5))
-    with pytest.raises(RouteError, match="planned with 1 deg to spare"):
-        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
-    # ... and beyond it, F is planned (here it goes on to find the sweep over
-    # CP too low by 1 mm for C1: F's own step, not the rise, refuses it)
-    monkeypatch.setattr(planner, "MAX_FAR_RISE", math.radians(rise + 1.1))
-    with pytest.raises(RouteError) as info:
-        plan_routes(RouteProblem(board, (wound, busy), ROBOT))
-    assert "bringing the cable over the clip" in info.value.reason, info.value.reason
-
-
 def test_a_slide_the_tail_cuts_to_a_few_millimetres_is_left_out() -> None:
     # random board 1652323633: W1's slide before F2 needed 1.1 mm; every
     # longer one would have laid the hanging tail on a fixture, so the

@@ -155,13 +155,6 @@ OVER_PEG = 0.02
 #: pulled across the slot too it comes out (random board 1808415002: lifted
 #: over F3 at 25 deg from F2 and 60 deg across its slot, W1 left F2, slack).
 CLIP_RISE = MAX_FAR_RISE
-#: F is planned only where the cable's rise from the clip to its last fixed
-#: point stays this much [rad] under F's own limit (``MAX_FAR_RISE``), which
-#: F judges on the model's contact: the height a winding leaves the cable at
-#: on a peg is the model's estimate, a few mm off (random board 1348249889:
-#: planned at 12.99 deg from F4's leave point, F measured 14.1 deg and
-#: refused, `precondition`).
-RISE_MARGIN = math.radians(1.0)
 #: Step [rad] of the rise a gripper is lifted by, about the last fixed point,
 #: before a slide that would otherwise run into a fixture.
 LIFT_STEP = math.radians(2.0)
@@ -1402,7 +1395,7 @@ class _Planner:
             )
         single = angle <= F_ANGLE or (angle <= SLOT_ANGLE and not self.other_arm_available(cable))
         rise = far_rise(c, seat, slot, 0.5 * clip.length)
-        if single and rise > MAX_FAR_RISE - RISE_MARGIN:
+        if single and rise > MAX_FAR_RISE:
             # F's own precondition: steeper, the far side holds the slot's
             # entry end up in the jaws' throat (single_arm_clipping.py)
             if not self.other_arm_available(cable):
@@ -1410,9 +1403,8 @@ class _Planner:
                     cable,
                     f"the cable rises {math.degrees(rise):.1f} deg from the clip to its last "
                     f"fixed point at {_fmt(c)} (F clips at most "
-                    f"{math.degrees(MAX_FAR_RISE):.0f} deg, planned with "
-                    f"{math.degrees(RISE_MARGIN):.0f} deg to spare) and C needs the other "
-                    f"gripper, but {self.why_other_busy(cable)}",
+                    f"{math.degrees(MAX_FAR_RISE):.0f} deg) and C needs the other gripper, but "
+                    f"{self.why_other_busy(cable)}",
                 )
             single = False
         if single:
