@@ -40,7 +40,7 @@ grippers.
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field, replace
 from typing import Literal
 
@@ -567,18 +567,8 @@ def hanging_tail_collision(
     cable's radius) of the gripper's way in the top view, with its top
     less than the tail's length below the gripper, is in the tail's way.
     """
-    a, b = _flat(start), _flat(end)
-    ab = b - a
-    for fixture in fixtures:
-        top = fixture_top(fixture)
-        if top is None or fixture.name in skip:
-            continue
-        p = _flat(_vec(fixture.position))
-        t = _along(a, b, p)
-        gap = float(np.linalg.norm(a + t * ab - p))
-        if gap > fixture_reach(fixture) + cable_radius + HANGING_TAIL_CLEAR:
-            continue
-        height = float(start[2]) + t * float(end[2] - start[2])
+    room = cable_radius + HANGING_TAIL_CLEAR
+    for fixture, top, height in _fixtures_beside(start, end, fixtures, room, skip):
         if height - top < tail:
             return Collision(fixture.name, height, top + tail, "cable's free tail")
     return None
@@ -658,6 +648,27 @@ def segment_collision(
     (horizontally) below its top plus :data:`CLEARANCE`. The fixture of
     ``skip`` (the one the cable leaves or is aimed at) is not checked.
     """
+    for fixture, top, height in _fixtures_beside(start, end, fixtures, cable_radius, skip):
+        needed = top + cable_radius + CLEARANCE
+        if height < needed:
+            return Collision(fixture.name, height, needed)
+    return None
+
+
+def _fixtures_beside(
+    start: FloatArray,
+    end: FloatArray,
+    fixtures: tuple[BoardFixture, ...],
+    room: float,
+    skip: frozenset[str],
+) -> Iterator[tuple[BoardFixture, float, float]]:
+    """(fixture, its top, the segment's height there) for each body within ``room`` [m] of it.
+
+    In the top view, the straight segment from ``start`` to ``end`` [m]
+    passes within the fixture's reach plus ``room`` of its position;
+    fixtures without a body (anchors) and those of ``skip`` are left out.
+    The height is the segment's where it passes nearest the fixture.
+    """
     a, b = _flat(start), _flat(end)
     ab = b - a
     for fixture in fixtures:
@@ -666,13 +677,9 @@ def segment_collision(
             continue
         p = _flat(_vec(fixture.position))
         t = _along(a, b, p)
-        if float(np.linalg.norm(a + t * ab - p)) > fixture_reach(fixture) + cable_radius:
+        if float(np.linalg.norm(a + t * ab - p)) > fixture_reach(fixture) + room:
             continue
-        height = float(start[2]) + t * float(end[2] - start[2])
-        needed = top + cable_radius + CLEARANCE
-        if height < needed:
-            return Collision(fixture.name, height, needed)
-    return None
+        yield fixture, top, float(start[2]) + t * float(end[2] - start[2])
 
 
 # ------------------------------------------------------------------ planner
