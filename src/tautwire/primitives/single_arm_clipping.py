@@ -376,7 +376,9 @@ class SingleArmClipping(Primitive):
         cable 4 mm beside its seat while the line from c passed over it. The
         shift (low-passed over ``EXIT_TIME``, at most ``MAX_LINE_SHIFT``) moves
         c onto the measured line for the alignment; nothing changes while the
-        pull is too short to tell a direction.
+        pull is too short to tell a direction. Out of a clip, only a shift
+        towards the side its slot leads to is taken (the bend puts the line
+        there, never on the other side).
         """
         d = np.array([direction[0], direction[1], 0.0])
         size = float(np.linalg.norm(d))
