@@ -15,6 +15,7 @@ from tautwire.primitives.clip_tug import (
     MIN_TUG,
     ClipTug,
     elevation,
+    lifted,
     tug_angle,
 )
 
@@ -97,3 +98,30 @@ def test_elevation_is_measured_towards_the_clip() -> None:
     out = np.array([0.0, 1.0, 0.0])
     assert elevation(np.array([0.0, -1.0, -1.0]), out) == pytest.approx(-math.pi / 4)
     assert elevation(np.array([0.0, -1.0, 0.0]), out) == pytest.approx(0.0)
+
+
+@settings(max_examples=200, deadline=None)
+@given(
+    yaw=st.floats(-math.pi, math.pi),
+    ahead=st.floats(0.02, 0.4),
+    up=st.floats(-0.05, 0.05),
+    side=st.floats(-0.02, 0.02),
+    angle=st.floats(-0.2, 0.2),
+)
+def test_lifting_turns_about_the_horizontal_axis_normal_to_out(
+    yaw: float, ahead: float, up: float, side: float, angle: float
+) -> None:
+    out = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    normal = np.array([-out[1], out[0], 0.0])
+    pivot = np.array([0.3, -0.1, 0.09])
+    in_plane = pivot + ahead * out + np.array([0.0, 0.0, up])
+    p = lifted(in_plane + side * normal, pivot, out, angle)
+    # the side offset stays; in the plane it is the rotation about the axis
+    assert float((p - pivot) @ normal) == pytest.approx(side, abs=1e-12)
+    assert np.allclose(p - side * normal, _lifted(pivot, in_plane, out, angle), atol=1e-12)
+    assert np.linalg.norm(p - pivot) == pytest.approx(
+        np.linalg.norm(in_plane + side * normal - pivot)
+    )
+    assert elevation(pivot - in_plane, out) - elevation(pivot - (p - side * normal), out) == (
+        pytest.approx(angle, abs=1e-9)
+    )

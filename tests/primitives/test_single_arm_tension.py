@@ -2,7 +2,10 @@ import numpy as np
 import pytest
 
 from tautwire.errors import InvalidArgumentError
-from tautwire.primitives import SingleArmTension
+from tautwire.model import PathGraph
+from tautwire.primitives import SingleArmTension, make_context
+from tautwire.primitives.clip_sensing import JAW_TOP
+from tautwire.primitives.context import ClipInfo
 from tautwire.primitives.model_estimator import TensionState
 from tautwire.primitives.single_arm_tension import SLACK_PULL_SPEED
 from tautwire.robot import Command
@@ -240,3 +243,34 @@ def test_slack_behind_a_clip_is_drawn_along_the_route_at_the_slack_speed() -> No
     assert abs(speed) == pytest.approx(SLACK_PULL_SPEED)
     # the stiff edge's own gain is many times slower
     assert abs(ctx.controller.force.speed(3.0, 0.0, 2715.0)) < 0.3 * SLACK_PULL_SPEED
+
+
+@pytest.mark.parametrize("held", [True, False])
+def test_at_a_clip_in_line_with_the_point_before_it_d_tugs_to_tell_held_from_left(
+    held: bool,
+) -> None:
+    # random board 1652323633 (seed 0): D's pull drew the cable out of clip
+    # F2, whose line from the gripper passed through peg F1 behind it, and D
+    # reported success against F1: only lifting about the clip tells them apart
+    info = ClipInfo(np.array([0.15, 0.0, 0.092]), 0.0, 4.0, 0.02)
+    gripper = np.array([0.35, 0.0, 0.1])
+    exit_point = info.exit_towards(gripper) + np.array([0.0, 0.0, JAW_TOP])
+    far = np.array([0.0, 0.0, float(exit_point[2])])
+    gripper[2] = exit_point[2]
+    graph = PathGraph.from_positions(
+        [far, info.position, gripper],
+        mass_per_length=0.0,
+        kinds=["fixed", "fixed", "gripper"],
+        labels=["A1", "F2", "left"],
+    )
+    ctx = make_context(graph, "left", k_initial=300.0, clips={"F2": info})
+    robot = SpringCableRobot(exit_point if held else far, gripper, 300.0, slack=0.005, seed=3)
+    report = run_step(robot, SingleArmTension("left", 3.0), ctx)
+    if held:
+        assert report.success, report
+        assert "at F2 lifted" in report.detail and ": held" in report.detail
+        # back at rest after the tug
+        assert np.linalg.norm(robot.p[[1, 2]] - gripper[[1, 2]]) < 0.004
+    else:
+        assert not report.success
+        assert report.cause == "left_fixture" and "F2" in report.detail, report

@@ -53,6 +53,10 @@ DISTINCT = math.radians(0.8)
 #: the way it read loose); random board 1695658280's F3, the cable 7.5 mm beside
 #: the slot, 1.4 deg against 5.1 / 1.8 deg.
 HOLD_SHARE = 1.0 / 3.0
+#: Time [s] the gripper rests lifted before the pull is read.
+TUG_SETTLE = 0.4
+#: How near [m] its lifted set point the gripper must be to rest there.
+TUG_REACHED = 0.003
 
 
 def tug_angle(push_force: float, tension: float) -> float:
@@ -68,6 +72,33 @@ def tug_angle(push_force: float, tension: float) -> float:
     """
     s = TUG_SHARE * push_force / max(tension, 1e-6)
     return min(max(math.asin(min(s, 1.0)), MIN_TUG), MAX_TUG)
+
+
+def lifted(position: FloatArray, pivot: FloatArray, out: FloatArray, angle: float) -> FloatArray:
+    """``position`` turned up by ``angle`` [rad] about the horizontal axis through ``pivot``.
+
+    The axis is normal to ``out``: the point rises in the vertical plane of
+    ``out``, keeping its distance from ``pivot``.
+
+    Args:
+        position: The point to turn [m].  # (3,)
+        pivot: A point of the axis [m] (a clip's exit).  # (3,)
+        out: Unit horizontal direction from the pivot towards ``position``.  # (3,)
+        angle: Upwards [rad].
+    """
+    w = np.asarray(position, dtype=float) - np.asarray(pivot, dtype=float)
+    ahead = float(w[0] * out[0] + w[1] * out[1])
+    up = float(w[2])
+    c, s = math.cos(angle), math.sin(angle)
+    side = w - ahead * np.asarray(out, dtype=float)
+    side[2] = 0.0
+    result: FloatArray = (
+        np.asarray(pivot, dtype=float)
+        + side
+        + (c * ahead - s * up) * np.asarray(out, dtype=float)
+        + np.array([0.0, 0.0, s * ahead + c * up])
+    )
+    return result
 
 
 def elevation(v: FloatArray, out: FloatArray) -> float:

@@ -20,7 +20,7 @@ from tautwire.primitives.clip_sensing import (
     far_rise,
     push_tension,
 )
-from tautwire.primitives.clip_tug import ClipTug, TugReading, tug_angle
+from tautwire.primitives.clip_tug import TUG_SETTLE, ClipTug, TugReading, tug_angle
 from tautwire.primitives.context import ClipInfo, PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import add_on_sensing_edge, drop_new_points
@@ -66,8 +66,6 @@ ALIGN_MISS = 0.0003
 FLOOR_DWELL = 1.0
 #: How near [m] the floor the gripper must come for the push to end there sooner.
 FLOOR_REACHED = 0.002
-#: Time [s] the gripper rests lifted in the tug before the pull is read.
-TUG_SETTLE = 0.4
 #: Time constant [s] of the low-pass on where the cable leaves the fingers.
 EXIT_TIME = 0.2
 #: Smallest turn [rad] of the cable's path round a peg from which the path,

@@ -10,7 +10,17 @@ import numpy as np
 from tautwire.control import DualPose, Pose
 from tautwire.control.force_controller import AdaptiveForceController
 from tautwire.errors import InvalidArgumentError
+from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
+from tautwire.primitives.clip_sensing import JAW_TOP
+from tautwire.primitives.clip_tug import (
+    TUG_REACHED,
+    TUG_SETTLE,
+    ClipTug,
+    TugReading,
+    lifted,
+    tug_angle,
+)
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
 from tautwire.primitives.model_edits import move_hold
@@ -47,6 +57,8 @@ SLACK_PULL_BELOW = 0.5
 ALIGNED = math.radians(10.0)
 #: How long [s] a turned gripper must stay aligned before D learns k.
 ALIGNED_TIME = 0.2
+#: Speed [m/s] at which the gripper lifts for the tug about a clip and comes back.
+TUG_SPEED = 0.02
 
 
 class SingleArmTension(Primitive):
@@ -243,6 +255,9 @@ class SingleArmTension(Primitive):
         self._cable: LowPass[np.ndarray] = LowPass()  # the cable's direction
         self._aligned_since: float | None = None
         self._taut_since: float | None = None
+        self._tug: _Tug | None = None
+        self._tugged = False
+        self._tug_note = ""
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -278,6 +293,11 @@ class SingleArmTension(Primitive):
             self._learn_start = self.elapsed
             ctx.estimator.learn_elasticity = True
         self._schedule(ctx)
+        if self._phase == "tug" and self._tug is not None:
+            target = self._tug.step(obs.time, me.position, obs.wrench(self.arm).force, state)
+            self._desired = with_pose(
+                self._desired, self.arm, Pose(target, self._desired_orientation())
+            )
         f_d = self.set_point(self.elapsed)
         pull, k_gain = state, None
         if self._phase == "approach" and self._through and state.tension < SLACK_PULL_BELOW * f_d:
@@ -318,6 +338,11 @@ class SingleArmTension(Primitive):
             state = replace(state, direction=line / n)
         return state, k_gain
 
+    def _desired_orientation(self) -> np.ndarray:
+        assert self._desired is not None
+        pose = self._desired.left if self.arm == "left" else self._desired.right
+        return pose.orientation
+
     def _held_position(self) -> np.ndarray:
         """The position set point [m] of the tensioning gripper (motion control holds it)."""
         assert self._desired is not None
@@ -356,7 +381,7 @@ class SingleArmTension(Primitive):
                 self.learn_time = learnt
                 self._judge_tension.reset()
         if self._phase != "learning":
-            self._amplitude = self.excitation
+            self._amplitude = 0.0 if self._phase == "tug" else self.excitation
             return
         if not self._k_history[:-1]:
             # the swing starts: fit it alone, not the samples of the cable coming taut
@@ -382,9 +407,28 @@ class SingleArmTension(Primitive):
                     )
                 )
             return
+        if held and holding and not self._tugged and self._start_tug(obs, ctx):
+            return
+        if self._phase == "tug" and self._tug is not None:
+            reading = self._tug.reading
+            if reading is not None and reading.distinct and not reading.holds:
+                self.outcome = Outcome.failure(
+                    "left_fixture",
+                    f"the cable left {self._tug.clip}: {reading.describe()}; the pull"
+                    " lines up with the point before it, so only the tug tells",
+                )
+                return
+            if self._tug.done:
+                assert reading is not None
+                told = "held" if reading.distinct else "not told apart"
+                self._tug_note = f"; at {self._tug.clip} {reading.describe()}: {told}"
+                self._phase, self._tugged = "hold", True
+                self._judge_tension.reset()
+            return
         if held and holding:
             self.outcome = Outcome.success(
                 f"tension {tension:.2f} N held {self.hold_time:g} s{self._k_note(ctx)}"
+                + self._tug_note
                 + self._draw_through(ctx)
             )
             return
@@ -418,6 +462,43 @@ class SingleArmTension(Primitive):
                 " the cable is no longer held where the model says",
             )
 
+    def _start_tug(self, obs: Observation, ctx: PrimitiveContext) -> bool:
+        """Start the tug about the clip the cable is taut against, if it is one; True if started.
+
+        The tension's line cannot tell a clip from the point before it where
+        the two lie on one line from the gripper: random board 1652323633
+        (seed 0) slid out of clip F2 along the line from peg F1 through it;
+        D's first pull drew the cable, sitting 2.3 mm up in the jaws' throat,
+        out of F2 (it bent up over the clip, from F1's winding 29 mm higher),
+        and D held 3 N against F1 and reported success. The tug lifts the
+        gripper about the clip's exit and reads what the pull turned about
+        (:mod:`~tautwire.primitives.clip_tug`).
+        """
+        est = ctx.estimator
+        c = est.contact_index
+        if c is None:
+            return False
+        clip = est.graph.points[c]
+        info = ctx.clips.get(clip.label) if clip.kind == "fixed" else None
+        far = est.point_before(c)
+        if info is None or far is None or far.kind == "gripper":
+            return False
+        me = obs.gripper(self.arm).position
+        out = me - info.position
+        out[2] = 0.0
+        n = norm3(out)
+        if n < 1e-3:
+            return False
+        out /= n
+        exit_point = info.exit_towards(me)
+        exit_point[2] += JAW_TOP
+        angle = tug_angle(info.push_force, self.force)
+        self._tug = _Tug(
+            clip.label, exit_point, far.position.copy(), out, me.copy(), angle, obs.time
+        )
+        self._phase = "tug"
+        return True
+
     def _draw_through(self, ctx: PrimitiveContext) -> str:
         """The model edit once taut: the slack the pull drew through clips is past them.
 
@@ -447,3 +528,75 @@ class SingleArmTension(Primitive):
         e = ctx.estimator.elasticity
         rel = e.std / e.k_hat if e.k_hat > 0.0 else math.inf
         return f"; k_hat {e.k_hat:.4g} N/m (std {100.0 * rel:.2g} %)"
+
+
+class _Tug:
+    """D's tug about a clip: rest, lift by ``angle`` about its exit, read, come back.
+
+    Args:
+        clip: The clip's label.
+        exit_point: Its exit on the gripper's side, at the jaws' top [m].  # (3,)
+        far: The constrained point before it [m].  # (3,)
+        out: Unit horizontal direction from the clip to the gripper.  # (3,)
+        rest: The gripper's position at rest [m].  # (3,)
+        angle: How far to lift [rad].
+        time: Now [s].
+    """
+
+    def __init__(
+        self,
+        clip: str,
+        exit_point: np.ndarray,
+        far: np.ndarray,
+        out: np.ndarray,
+        rest: np.ndarray,
+        angle: float,
+        time: float,
+    ) -> None:
+        self.clip = clip
+        self.exit = exit_point
+        self.far = far
+        self.rest = rest
+        self.up = lifted(rest, exit_point, out, angle)
+        self.pull = ClipTug(out)
+        self.stage = "rest"
+        self.since = time
+        self.reached: float | None = None
+        #: The tug's reading (None until the gripper has rested lifted).
+        self.reading: TugReading | None = None
+
+    @property
+    def done(self) -> bool:
+        """Whether the gripper is back at rest after the reading."""
+        return self.stage == "done"
+
+    def step(
+        self, time: float, position: np.ndarray, force: np.ndarray, state: TensionState
+    ) -> np.ndarray:
+        """Add the measured force [N]; the gripper's position set point [m] now.
+
+        The set point moves at ``TUG_SPEED`` between rest and lifted; the
+        gripper is there once its error across the pull (along it, force
+        control sets the position) is under ``TUG_REACHED``.
+        """
+        self.pull.update(time, force)
+        if self.stage in ("rest", "done"):
+            if self.stage == "rest" and time - self.since >= TUG_SETTLE:
+                self.pull.mark_rest(position)
+                self.stage, self.since = "lift", time
+            return self.rest
+        start, end = (self.rest, self.up) if self.stage == "lift" else (self.up, self.rest)
+        span = norm3(end - start)
+        share = min(1.0, TUG_SPEED * (time - self.since) / max(span, 1e-9))
+        target: np.ndarray = start + share * (end - start)
+        error = position - end
+        error -= float(error @ state.direction) * state.direction
+        if share >= 1.0 and norm3(error) < TUG_REACHED:
+            self.reached = time if self.reached is None else self.reached
+        if self.reached is not None and time - self.reached >= TUG_SETTLE:
+            if self.stage == "lift":
+                self.reading = self.pull.reading(position, self.exit, self.far)
+                self.stage, self.since, self.reached = "back", time, None
+            else:
+                self.stage = "done"
+        return target
