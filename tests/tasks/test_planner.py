@@ -927,3 +927,29 @@ def test_random_board_1695658280_slides_round_w1_s_clip(monkeypatch: pytest.Monk
         t = float(np.clip((p - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0))
         gap = float(np.linalg.norm(a + t * (b - a) - p))
         assert gap > 0.015 + 0.0025 + HANGING_TAIL_CLEAR, (k, gap)
+
+
+def test_random_board_604736314_keeps_the_fingers_over_w1_s_laid_span(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the sweep onto peg F3 and the winding round it ran the fingers at 80 mm
+    # across W1's first span, anchor A1 to clip F1, at 80 mm: they dragged
+    # it and the gripper truly pulled 38 N
+    from tautwire.tasks.planner import CLEARANCE, FINGER_CLEARANCE, LAID_TRIM, PAD_DEPTH
+
+    scenario = _board(604736314)
+    where = {f.name: np.asarray(f.position) for f in scenario.board.fixtures}
+    w1 = next(c for c in scenario.cables if c.name == "W1")
+    a, b = where["A1"][:2], where["F1"][:2]
+    needed = 0.08 + w1.radius + CLEARANCE + PAD_DEPTH
+    states = _planned_states(monkeypatch, 604736314)
+    points = [s[3] for s in states if s[0] == "W1"]
+    points += [np.asarray(s[2]["to"]) for s in states if s[0] == "W1" and s[1] == "move"]
+    near = 0
+    for p in points:
+        t = float(np.clip((p[:2] - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0))
+        if np.linalg.norm(a + t * (b - a) - p[:2]) < FINGER_CLEARANCE:
+            near += 1
+            assert p[2] >= needed - 1e-9, p
+    assert near > 0  # the plan does pass there (above it)
+    assert LAID_TRIM < np.linalg.norm(b - a)

@@ -126,6 +126,10 @@ HANGING_TAIL_CLEAR = 0.01
 #: harness board's slides pass clips 19 mm over their jaws unharmed; a move at
 #: run time rises as high over a peg in its way, ``move.PEG_ABOVE``).
 GRIPPER_ABOVE = PEG_ABOVE
+#: Length [m] of a cable's last laid span, next to the fixed point the gripper
+#: works about, that the fingers may pass over low (the fixture's own body is
+#: checked there).
+LAID_TRIM = 0.04
 #: The name of the collision of a winding gripper with its cable's span into the peg.
 OWN_SPAN = "the cable's own span"
 #: Horizontal room [m] a slide leaves between where it ends and the reach of
@@ -702,6 +706,13 @@ class _Cable:
     #: Where F leaves the gripper, lower than ``gripper`` (see ``_Planner.after_push``);
     #: None once another step is planned (``_Planner.emit``).
     pressed: FloatArray | None = None
+    #: The cable laid so far: the fixed points it leaves, by fixture, from its start.
+    laid: list[tuple[str, FloatArray]] = field(default_factory=list)
+
+    def lay(self, fixture: str) -> None:
+        """The cable now leaves ``fixture`` at ``contact``: the last fixed point it is laid to."""
+        self.last = fixture
+        self.laid.append((fixture, self.contact.copy()))
 
     @property
     def free(self) -> float:
@@ -730,6 +741,7 @@ class _Planner:
         self.fixtures = {f.name: f for f in problem.fixtures}
         self.steps: list[PlannedStep] = []
         self.cables: list[CablePlan] = []
+        self.routed: list[_Cable] = []  # the cables planned, as laid
         self.holder: dict[Arm, str | None] = {"left": None, "right": None}
         for cable in problem.cables:
             for arm, _ in cable.holds:
@@ -846,7 +858,7 @@ class _Planner:
             )
         anchor = _vec(start.position)
         cable = _Cable(spec, arm, at, _vec(self.robot.grippers[arm]), anchor, 0.0)
-        cable.last = spec.start
+        cable.lay(start.name)
         # the cable starts through its via fixtures: the route must begin with them
         entries = list(enumerate(spec.route, start=1))
         for k, name in enumerate(spec.via):
@@ -912,6 +924,7 @@ class _Planner:
         self.cables.append(
             CablePlan(spec.name, tuple(cable.steps), cable.s_contact, cable.at, cable.arm)
         )
+        self.routed.append(cable)
 
     def next_point(self, entry: RouteEntry | None) -> FloatArray | None:
         """Where the cable heads for after a peg: the next fixture's seat or axis [m]."""
@@ -952,7 +965,7 @@ class _Planner:
         if fixture.kind == "clip":
             self.advance_clip(cable, fixture)
             return
-        cable.last = fixture.name
+        cable.lay(fixture.name)
         if entry.wind:
             raise self.fail(cable, "the initial routing (via) lays no windings")
         sign = 1.0 if entry.side == "left" else -1.0
@@ -1112,7 +1125,7 @@ class _Planner:
         # 1991395197: wound 352 deg round F1 at 97 mm, the cable left it at
         # about 108 mm and rose 16.7 deg to the next clip, too steep for F)
         cable.contact[2] = z_pass + crossings * LEAVE_CLIMB * 2.0 * cable.spec.radius
-        cable.last = peg.name
+        cable.lay(peg.name)
 
     def peg_motion(
         self,
@@ -1223,6 +1236,7 @@ class _Planner:
                     )
                     or gripper_collision(point, self.problem.fixtures, around)
                     or self.tail_hit(cable, point, pivot, around)
+                    or self.laid_hit(cable, point)
                     or parked_collision(pivot, point, self.parked_other(cable), cable.spec.radius)
                 )
                 if collision is not None:
@@ -1341,11 +1355,49 @@ class _Planner:
     def held_hit(
         self, cable: _Cable, gripper: FloatArray, pivot: FloatArray, skip: frozenset[str]
     ) -> Collision | None:
-        """The fixture (if any) the gripper at ``gripper`` [m] or the tail beyond it runs into."""
+        """The fixture (if any) the gripper at ``gripper`` [m] or the tail beyond it runs into.
+
+        Or a laid cable span its fingers would catch (:meth:`laid_hit`).
+        """
         hit = gripper_collision(gripper, self.problem.fixtures, skip)
         if hit is None:
             hit = self.tail_hit(cable, gripper, pivot, skip)
+        if hit is None:
+            hit = self.laid_hit(cable, gripper)
         return hit
+
+    def laid_hit(self, cable: _Cable, gripper: FloatArray) -> Collision | None:
+        """The laid cable span (if any) the fingers of a gripper at ``gripper`` [m] catch.
+
+        A span laid between two fixed points (either cable's, the one being
+        routed up to its last fixed point) lies no higher than the straight
+        line between them. The fingers catch it where the tool centre point
+        passes within ``FINGER_CLEARANCE`` of it horizontally with the pads'
+        bottom lower than its top plus ``CLEARANCE``. Random board 604736314
+        (seed 10): the sweep onto peg F3 ended, and the winding round it
+        ran, with the fingers at 80 mm across W1's first span, anchor A1 to
+        clip F1, at 80 mm; they dragged it, and the pull on clip F2 rose to
+        43 N (the protective stop read 23 N at the gripper).
+        """
+        g = _flat(gripper)
+        for other in [*self.routed, cable]:
+            laid = other.laid
+            for k in range(len(laid) - 1):
+                (name_a, a), (name_b, b) = laid[k], laid[k + 1]
+                if other is cable and k == len(laid) - 2:
+                    length = float(np.linalg.norm(_flat(b - a)))
+                    if length <= LAID_TRIM:
+                        continue
+                    b = a + (b - a) * (1.0 - LAID_TRIM / length)
+                t = _along(_flat(a), _flat(b), g)
+                on = a + t * (b - a)
+                if float(np.linalg.norm(g - _flat(on))) >= FINGER_CLEARANCE:
+                    continue
+                needed = float(on[2]) + other.spec.radius + CLEARANCE + PAD_DEPTH
+                if float(gripper[2]) < needed:
+                    span = f"{other.spec.name}'s span from {name_a} to {name_b}"
+                    return Collision(span, float(gripper[2]), needed, "gripper")
+        return None
 
     def arc(
         self, c: FloatArray, start: FloatArray, end: FloatArray, sign: float
@@ -1385,7 +1437,7 @@ class _Planner:
         _, exit_point, _ = self.slot_line(cable, clip)
         cable.s_contact += float(np.linalg.norm(exit_point - cable.contact))
         cable.contact = exit_point
-        cable.last = clip.name
+        cable.lay(clip.name)
         self.clips_used[clip.name] = cable.spec.name
 
     def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
@@ -1522,7 +1574,7 @@ class _Planner:
         cable.pressed = self.after_push(cable, clip, exit_point, target)
         cable.s_contact += to_exit
         cable.contact = exit_point
-        cable.last = clip.name
+        cable.lay(clip.name)
 
     def after_push(
         self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, aimed: FloatArray
@@ -1706,7 +1758,7 @@ class _Planner:
         entry = seat - 0.5 * clip.length * slot
         cable.s_contact += float(np.linalg.norm(entry - cable.contact)) + clip.length
         cable.contact = exit_point
-        cable.last = clip.name
+        cable.lay(clip.name)
         self.emit(
             cable,
             "single_arm_tension",
