@@ -1949,6 +1949,14 @@ class _Planner:
                 f"{hit.fixture} (expected the gripper's way clear of every fixture the tail "
                 "could hang onto)",
             )
+        ahead_of = self.slide_end_hit(cable, start, low)
+        if ahead_of is not None:
+            raise self.fail(
+                cable,
+                f"sliding the cable out {what} ends short of {ahead_of.name}, where the tail "
+                "hanging from the fingers lands (expected the slide to end at least "
+                f"{SLIDE_CLEAR * 1e3:.0f} mm beyond the reach of every fixture ahead)",
+            )
         self.emit(
             cable,
             "single_arm_sliding",
@@ -2015,8 +2023,30 @@ class _Planner:
                     and self.path_collision(cable, c, start, [lifted, out], skip, gripper_skip)
                     is None
                     and self.hanging_tail_hit(cable, lifted, out, distance) is None
+                    and self.slide_end_hit(cable, lifted, out) is None
                 ):
                     return lifted
+        return None
+
+    def slide_end_hit(
+        self, cable: _Cable, start: FloatArray, end: FloatArray
+    ) -> BoardFixture | None:
+        """The fixture (if any) ahead of a slide's end that the tail beyond the fingers lands on.
+
+        A fixture within its reach plus ``SLIDE_CLEAR`` of the end, on the
+        far side of it along the slide. Random board 1135846973 (seed 10):
+        the slide out of F4 towards F5, turned aside to pass the board,
+        ended 32 mm from F6's centre (planned on the straight way, 67 mm);
+        the tail caught F6's jaws and the pull through the fingers rose to
+        8 N.
+        """
+        way = _unit(_flat(end - start))
+        for f in self.problem.fixtures:
+            if f.name == cable.last or fixture_top(f) is None:
+                continue
+            w = _flat(_vec(f.position) - end)
+            if float(np.linalg.norm(w)) < fixture_reach(f) + SLIDE_CLEAR and float(w @ way) > 0.0:
+                return f
         return None
 
     def slide_end(self, cable: _Cable, start: FloatArray, distance: float) -> FloatArray:
