@@ -952,4 +952,42 @@ def test_random_board_604736314_keeps_the_fingers_over_w1_s_laid_span(
             near += 1
             assert p[2] >= needed - 1e-9, p
     assert near > 0  # the plan does pass there (above it)
-    assert LAID_TRIM < np.linalg.norm(b - a)
+    assert np.linalg.norm(b - a) > LAID_TRIM
+
+
+def test_random_board_1135846973_ends_the_slide_out_of_f4_clear_of_f6(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the slide out of F4, turned aside to pass the board, ended 32 mm from
+    # F6's centre (checked on the straight way only: 67 mm); the tail caught
+    # F6's jaws and the pull through the fingers rose to 8 N
+    from tautwire.scenario.models import CLIP_LENGTH
+    from tautwire.tasks.planner import SLIDE_CLEAR
+
+    scenario = _board(1135846973)
+    f6 = next(f for f in scenario.board.fixtures if f.name == "F6")
+    states = _planned_states(monkeypatch, 1135846973)
+    slides = [k for k, s in enumerate(states) if s[1] == "single_arm_sliding" and s[0] == "W2"]
+    assert slides
+    k = slides[0]
+    before = states[k - 1]
+    start = np.asarray(before[2]["to"]) if before[1] == "move" else states[k][3]
+    end = states[k + 2][3]  # after the slide and the pull after it
+    w = np.asarray(f6.position[:2]) - end[:2]
+    way = (end - start)[:2]
+    ahead = float(w @ way) > 0.0
+    assert not ahead or np.linalg.norm(w) >= 0.5 * CLIP_LENGTH + SLIDE_CLEAR, (start, end)
+
+
+def test_a_catch_past_the_aim_is_not_wound_round_again() -> None:
+    # random board 1522202503: W2 passes F5 on its left nearly straight (a
+    # 2 deg wrap) towards F6; the catch bent it 37 deg past the aim and the
+    # plan wound 323 deg round the peg, 50 mm of cable its length budget did
+    # not have: F6 was out of reach. Without the loop the catch is all the
+    # bend there is, too little for I to find the peg: the route is refused.
+    from tautwire.scenario.route_problem import route_problem
+
+    problem = route_problem(_board(1522202503))
+    w2_first = replace(problem, cables=tuple(reversed(problem.cables)))
+    with pytest.raises(RouteError, match=r"W2, route entry 1 \(F5\).*bends only"):
+        planner._Planner(w2_first).plan()

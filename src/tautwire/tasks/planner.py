@@ -1210,7 +1210,12 @@ class _Planner:
                 _unit(_flat(_vec(nxt.position) - axis)), -sign * self.short_of(peg, following)
             )
             swept = _swept(_flat(catch - axis), aim, sign)
-            if swept > 2.0 * math.pi - math.radians(30.0):  # the catch is past the aim already
+            # the catch is past the aim already where the sweep to it exceeds
+            # the taut wrap by more than half a turn: random board 1522202503
+            # (seed 10) passed F5 nearly straight (a 2 deg wrap), caught it
+            # 37 deg past the aim and wound 323 deg round it, 50 mm of cable
+            # the length budget did not have, and F6 was out of reach
+            if swept > turn - 2.0 * math.pi * entry.wind + math.pi:
                 swept -= 2.0 * math.pi
             rest = max(swept + 2.0 * math.pi * entry.wind, 0.0)
         if collision is None and rest > SMALL_TURN:
