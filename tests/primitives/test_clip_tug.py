@@ -125,3 +125,23 @@ def test_lifting_turns_about_the_horizontal_axis_normal_to_out(
     assert elevation(pivot - in_plane, out) - elevation(pivot - (p - side * normal), out) == (
         pytest.approx(angle, abs=1e-9)
     )
+
+
+@settings(max_examples=100, deadline=None)
+@given(yaw=st.floats(-math.pi, math.pi), ahead=st.floats(0.02, 0.4), angle=st.floats(-0.2, 0.2))
+def test_a_swing_aside_turns_about_the_vertical_through_the_pivot(
+    yaw: float, ahead: float, angle: float
+) -> None:
+    out = np.array([math.cos(yaw), math.sin(yaw), 0.0])
+    aside = np.array([-out[1], out[0], 0.0])
+    pivot = np.array([0.3, -0.1, 0.09])
+    p = pivot + ahead * out + np.array([0.0, 0.0, 0.012])
+    q = lifted(p, pivot, out, angle, aside)
+    assert q[2] == pytest.approx(p[2])  # the height stays
+    assert np.linalg.norm((q - pivot)[:2]) == pytest.approx(ahead)
+    turned = math.atan2(float((q - pivot) @ aside), float((q - pivot) @ out))
+    assert turned == pytest.approx(angle, abs=1e-9)
+    # the tug reads the swing in its plane: a pull towards the pivot turned by it
+    assert elevation(pivot - p, out, aside) - elevation(pivot - q, out, aside) == pytest.approx(
+        angle, abs=1e-9
+    )

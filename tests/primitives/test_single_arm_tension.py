@@ -268,7 +268,7 @@ def test_at_a_clip_in_line_with_the_point_before_it_d_tugs_to_tell_held_from_lef
     report = run_step(robot, SingleArmTension("left", 3.0), ctx)
     if held:
         assert report.success, report
-        assert "at F2 lifted" in report.detail and ": held" in report.detail
+        assert "at F2 swung aside" in report.detail and ": held" in report.detail
         # back at rest after the tug
         assert np.linalg.norm(robot.p[[1, 2]] - gripper[[1, 2]]) < 0.004
     else:

@@ -14,12 +14,12 @@ from tautwire.model.vector3 import norm3
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.clip_sensing import JAW_TOP
 from tautwire.primitives.clip_tug import (
-    TUG_REACHED,
+    TUG_REACHED_MIN,
+    TUG_REACHED_SHARE,
     TUG_SETTLE,
     ClipTug,
     TugReading,
     lifted,
-    tug_angle,
 )
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
@@ -59,6 +59,11 @@ ALIGNED = math.radians(10.0)
 ALIGNED_TIME = 0.2
 #: Speed [m/s] at which the gripper lifts for the tug about a clip and comes back.
 TUG_SPEED = 0.02
+#: Angle [rad] by which D swings the gripper aside about a clip's exit to tell
+#: whether the clip holds the cable.
+SWING = math.radians(5.0)
+#: Longest wait [s] for the gripper to reach its tug set point.
+TUG_LATE = 2.0
 
 
 class SingleArmTension(Primitive):
@@ -470,9 +475,9 @@ class SingleArmTension(Primitive):
         (seed 0) slid out of clip F2 along the line from peg F1 through it;
         D's first pull drew the cable, sitting 2.3 mm up in the jaws' throat,
         out of F2 (it bent up over the clip, from F1's winding 29 mm higher),
-        and D held 3 N against F1 and reported success. The tug lifts the
-        gripper about the clip's exit and reads what the pull turned about
-        (:mod:`~tautwire.primitives.clip_tug`).
+        and D held 3 N against F1 and reported success. The tug swings the
+        gripper aside about the clip's exit and reads what the pull turned
+        about (:class:`_Tug`, :mod:`~tautwire.primitives.clip_tug`).
         """
         est = ctx.estimator
         c = est.contact_index
@@ -492,10 +497,7 @@ class SingleArmTension(Primitive):
         out /= n
         exit_point = info.exit_towards(me)
         exit_point[2] += JAW_TOP
-        angle = tug_angle(info.push_force, self.force)
-        self._tug = _Tug(
-            clip.label, exit_point, far.position.copy(), out, me.copy(), angle, obs.time
-        )
+        self._tug = _Tug(clip.label, exit_point, far.position.copy(), out, me.copy(), obs.time)
         self._phase = "tug"
         return True
 
@@ -531,7 +533,14 @@ class SingleArmTension(Primitive):
 
 
 class _Tug:
-    """D's tug about a clip: rest, lift by ``angle`` about its exit, read, come back.
+    """D's tug about a clip: rest, swing aside by ``SWING`` about its exit, read, come back.
+
+    Aside, not up as F lifts: a cable in the jaws' throat rises as it is
+    lifted and turns about a point behind the exit, much as a loose one
+    does (random boards 1742396983 and 247036674, seed 11: clipped, lifted
+    by 3 deg, the pull turned 1.3 deg against 2.9 about the exit and 0.7
+    about the far contact; 1652323633 out of its clip 2.4 against 3.6 and
+    2.0); across, the slot's walls hold it at the exit.
 
     Args:
         clip: The clip's label.
@@ -539,7 +548,6 @@ class _Tug:
         far: The constrained point before it [m].  # (3,)
         out: Unit horizontal direction from the clip to the gripper.  # (3,)
         rest: The gripper's position at rest [m].  # (3,)
-        angle: How far to lift [rad].
         time: Now [s].
     """
 
@@ -550,15 +558,15 @@ class _Tug:
         far: np.ndarray,
         out: np.ndarray,
         rest: np.ndarray,
-        angle: float,
         time: float,
     ) -> None:
         self.clip = clip
         self.exit = exit_point
         self.far = far
         self.rest = rest
-        self.up = lifted(rest, exit_point, out, angle)
-        self.pull = ClipTug(out)
+        aside = np.array([-out[1], out[0], 0.0])
+        self.aside = lifted(rest, exit_point, out, SWING, aside)
+        self.pull = ClipTug(out, aside)
         self.stage = "rest"
         self.since = time
         self.reached: float | None = None
@@ -577,7 +585,8 @@ class _Tug:
 
         The set point moves at ``TUG_SPEED`` between rest and lifted; the
         gripper is there once its error across the pull (along it, force
-        control sets the position) is under ``TUG_REACHED``.
+        control sets the position) is under ``TUG_REACHED_SHARE`` of the
+        lift; after ``TUG_LATE`` [s] there it rests all the same.
         """
         self.pull.update(time, force)
         if self.stage in ("rest", "done"):
@@ -585,13 +594,16 @@ class _Tug:
                 self.pull.mark_rest(position)
                 self.stage, self.since = "lift", time
             return self.rest
-        start, end = (self.rest, self.up) if self.stage == "lift" else (self.up, self.rest)
+        start, end = (self.rest, self.aside) if self.stage == "lift" else (self.aside, self.rest)
         span = norm3(end - start)
         share = min(1.0, TUG_SPEED * (time - self.since) / max(span, 1e-9))
         target: np.ndarray = start + share * (end - start)
         error = position - end
         error -= float(error @ state.direction) * state.direction
-        if share >= 1.0 and norm3(error) < TUG_REACHED:
+        near = max(TUG_REACHED_SHARE * span, TUG_REACHED_MIN)
+        if share >= 1.0 and (
+            norm3(error) < near or time - self.since >= span / TUG_SPEED + TUG_LATE
+        ):
             self.reached = time if self.reached is None else self.reached
         if self.reached is not None and time - self.reached >= TUG_SETTLE:
             if self.stage == "lift":
