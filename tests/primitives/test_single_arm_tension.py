@@ -274,3 +274,13 @@ def test_at_a_clip_in_line_with_the_point_before_it_d_tugs_to_tell_held_from_lef
     else:
         assert not report.success
         assert report.cause == "left_fixture" and "F2" in report.detail, report
+
+
+def test_against_an_anchor_d_does_not_tug() -> None:
+    # the tug is for a clip in line with the point behind it; an anchor is
+    # the fixed end itself, and Table I's D scenes end as they did
+    robot = SpringCableRobot(CONTACT, GRIPPER, 300.0, slack=0.005, seed=5)
+    report = run_step(robot, SingleArmTension("left", 3.0), context(k_initial=300.0))
+    assert report.success, report
+    assert "swung aside" not in report.detail
+    assert np.linalg.norm(robot.p[[1, 2]] - GRIPPER[[1, 2]]) < 1e-3  # held still across the cable
