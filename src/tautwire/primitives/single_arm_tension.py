@@ -57,7 +57,7 @@ SLACK_PULL_BELOW = 0.5
 ALIGNED = math.radians(10.0)
 #: How long [s] a turned gripper must stay aligned before D learns k.
 ALIGNED_TIME = 0.2
-#: Speed [m/s] at which the gripper lifts for the tug about a clip and comes back.
+#: Speed [m/s] at which the gripper swings aside for the tug about a clip and back.
 TUG_SPEED = 0.02
 #: Angle [rad] by which D swings the gripper aside about a clip's exit to tell
 #: whether the clip holds the cable.
@@ -344,6 +344,7 @@ class SingleArmTension(Primitive):
         return state, k_gain
 
     def _desired_orientation(self) -> np.ndarray:
+        """The orientation set point (unit quaternion) of the tensioning gripper."""
         assert self._desired is not None
         pose = self._desired.left if self.arm == "left" else self._desired.right
         return pose.orientation
@@ -570,7 +571,7 @@ class _Tug:
         self.stage = "rest"
         self.since = time
         self.reached: float | None = None
-        #: The tug's reading (None until the gripper has rested lifted).
+        #: The tug's reading (None until the gripper has rested swung aside).
         self.reading: TugReading | None = None
 
     @property
@@ -583,7 +584,7 @@ class _Tug:
     ) -> np.ndarray:
         """Add the measured force [N]; the gripper's position set point [m] now.
 
-        The set point moves at ``TUG_SPEED`` between rest and lifted; the
+        The set point moves at ``TUG_SPEED`` between rest and aside; the
         gripper is there once its error across the pull (along it, force
         control sets the position) is under ``TUG_REACHED_SHARE`` of the
         lift; after ``TUG_LATE`` [s] there it rests all the same.
@@ -592,9 +593,9 @@ class _Tug:
         if self.stage in ("rest", "done"):
             if self.stage == "rest" and time - self.since >= TUG_SETTLE:
                 self.pull.mark_rest(position)
-                self.stage, self.since = "lift", time
+                self.stage, self.since = "aside", time
             return self.rest
-        start, end = (self.rest, self.aside) if self.stage == "lift" else (self.aside, self.rest)
+        start, end = (self.rest, self.aside) if self.stage == "aside" else (self.aside, self.rest)
         span = norm3(end - start)
         share = min(1.0, TUG_SPEED * (time - self.since) / max(span, 1e-9))
         target: np.ndarray = start + share * (end - start)
@@ -606,7 +607,7 @@ class _Tug:
         ):
             self.reached = time if self.reached is None else self.reached
         if self.reached is not None and time - self.reached >= TUG_SETTLE:
-            if self.stage == "lift":
+            if self.stage == "aside":
                 self.reading = self.pull.reading(position, self.exit, self.far)
                 self.stage, self.since, self.reached = "back", time, None
             else:
