@@ -702,7 +702,6 @@ class _Cable:
     entry: int | None = None  # 1-based route entry being planned
     fixture: str | None = None
     steps: list[int] = field(default_factory=list)
-    last: str | None = None  # the fixture at the last fixed point
     #: Where F leaves the gripper, lower than ``gripper`` (see ``_Planner.after_push``);
     #: None once another step is planned (``_Planner.emit``).
     pressed: FloatArray | None = None
@@ -711,8 +710,12 @@ class _Cable:
 
     def lay(self, fixture: str) -> None:
         """The cable now leaves ``fixture`` at ``contact``: the last fixed point it is laid to."""
-        self.last = fixture
         self.laid.append((fixture, self.contact.copy()))
+
+    @property
+    def last(self) -> str | None:
+        """The fixture at the last fixed point (None before the cable is laid to one)."""
+        return self.laid[-1][0] if self.laid else None
 
     @property
     def free(self) -> float:
