@@ -731,12 +731,14 @@ def test_c_after_a_clip_keeps_cable_for_the_near_span_to_turn_out_of_its_slot(
 ) -> None:
     """The cable leaves C1's jaws straight along its slot and bends beyond them.
 
-    C into CT then holds its near gripper 48 deg off C1's slot: the near
-    span needs ``BEND_SLACK`` (1 - cos 48 deg) more than its straight length
+    C into CT then holds its near gripper 44 deg off C1's slot: the near
+    span needs ``BEND_SLACK`` (1 - cos 44 deg) more than its straight length
     and ``NEAR_SLACK`` (random board 1652323633's C into F7, 75 deg off F6's
     slot: taut on the way over F7, 13.6 N).
     """
-    turn = BoardFixture("CT", "clip", (0.40, 0.19, 0.08), yaw=1.45, push_force=2.5, length=0.03)
+    # CT's slot 11 deg across the cable's line from the bend's corner past
+    # C1 (``BEND_RUN``): beyond F_ANGLE, pressed in with both grippers
+    turn = BoardFixture("CT", "clip", (0.40, 0.19, 0.08), yaw=1.5, push_force=2.5, length=0.03)
     board = (*(f for f in BOARD if f.name != "C2"), turn)  # C2: in C's way over CT
     w1 = cable("W1", [RouteEntry("C1"), RouteEntry("CT")], length=0.9, holds=(("left", 0.40),))
 
@@ -748,11 +750,11 @@ def test_c_after_a_clip_keeps_cable_for_the_near_span_to_turn_out_of_its_slot(
         return float(p.steps[c - 1].params["at"])  # type: ignore[arg-type]
 
     exit_c1 = np.array([0.365, 0.10])  # C1's slot runs along x, away from A1
-    slot = np.array([math.cos(1.45), math.sin(1.45)])
+    slot = np.array([math.cos(1.5), math.sin(1.5)])
     near = np.array([0.40, 0.19]) - 0.5 * SPAN * slot
     way = (near - exit_c1) / np.linalg.norm(near - exit_c1)
     bend = 1.0 - float(way @ np.array([1.0, 0.0]))
-    assert math.degrees(math.acos(1.0 - bend)) == pytest.approx(48.0, abs=1.0)
+    assert math.degrees(math.acos(1.0 - bend)) == pytest.approx(44.0, abs=1.0)
     into = 1.0 - float(way @ slot)  # and into CT's slot's line at the near gripper
     assert near_grasp(0.02) - near_grasp(0.0) == pytest.approx(0.02 * (bend + into), abs=2e-4)
 
@@ -991,3 +993,21 @@ def test_a_catch_past_the_aim_is_not_wound_round_again() -> None:
     w2_first = replace(problem, cables=tuple(reversed(problem.cables)))
     with pytest.raises(RouteError, match=r"W2, route entry 1 \(F5\).*bends only"):
         planner._Planner(w2_first).plan()
+
+
+@pytest.mark.parametrize(("yaw_deg", "clipping"), [(-52.0, "parallel"), (-68.0, "single_arm")])
+def test_a_clip_after_a_turn_out_of_a_clip_is_judged_from_the_bend_s_corner(
+    yaw_deg: float, clipping: str
+) -> None:
+    # the cable turns 60 deg out of K1 and reaches K2's slot 8 deg off the
+    # line from K1's exit, within F_ANGLE; but it runs on along K1's slot
+    # for BEND_RUN before it turns, and from there it crosses K2 at 11.4 deg
+    # on one side (both grippers press it in) and 4.6 deg on the other (F)
+    k1 = BoardFixture("K1", "clip", (0.20, 0.20, 0.08), yaw=0.0, push_force=2.0, length=0.03)
+    turn = math.radians(-60.0)
+    seat = (0.215 + 0.15 * math.cos(turn), 0.20 + 0.15 * math.sin(turn), 0.08)
+    k2 = BoardFixture("K2", "clip", seat, yaw=math.radians(yaw_deg), push_force=2.0, length=0.03)
+    w1 = cable("W1", [RouteEntry("K1"), RouteEntry("K2")], holds=(("left", 0.45),))
+    p = plan_routes(RouteProblem((BOARD[0], k1, k2), (w1,), ROBOT))
+    (k2_step,) = [s for s in p.steps if s.params.get("clip") == "K2"]
+    assert k2_step.primitive == f"{clipping}_clipping"
