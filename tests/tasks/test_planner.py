@@ -48,7 +48,8 @@ BOARD = (
     BoardFixture("C2", "clip", (0.50, 0.10, 0.08), yaw=0.0, push_force=2.5, length=0.03),
     BoardFixture("C3", "clip", (0.30, -0.20, 0.08), yaw=0.0, push_force=2.5, length=0.03),
     BoardFixture("C4", "clip", (0.30, -0.20, 0.08), yaw=math.pi / 2, push_force=2.5, length=0.03),
-    BoardFixture("C5", "clip", (0.25, 0.27, 0.08), yaw=math.pi / 2, push_force=2.5, length=0.03),
+    # 55 deg across the line from A1: beyond F, within C (C_ANGLE)
+    BoardFixture("C5", "clip", (0.25, 0.27, 0.08), yaw=1.30, push_force=2.5, length=0.03),
     BoardFixture("LOW", "clip", (0.25, 0.27, 0.006), yaw=0.0, push_force=2.5, length=0.03),
     BoardFixture("EDGE", "peg", (0.74, 0.20, 0.05), radius=0.006, height=0.06),
     BoardFixture("FAR", "peg", (0.60, -0.45, 0.05), radius=0.006, height=0.06),
@@ -640,10 +641,11 @@ def test_c_grasps_so_that_the_near_span_lies_straight_when_released(held: float)
     half = 0.5 * (at - grasp)  # the grippers end 2 half apart, centred on the seat
     assert half >= 0.5 * SPAN - 1e-9
     seat = np.array(BOARD[7].position)
-    near = seat - half * np.array([0.0, 1.0, 0.0])  # C5's slot along y, away from A1
+    slot = np.array([math.cos(BOARD[7].yaw), math.sin(BOARD[7].yaw), 0.0])  # away from A1
+    near = seat - half * slot
     to_near = near[:2] - np.array(BOARD[0].position[:2])
     straight = float(np.linalg.norm(to_near))
-    bend = 1.0 - float(to_near[1]) / straight  # into the slot's line at the near gripper
+    bend = 1.0 - float(to_near @ slot[:2]) / straight  # into the slot's line at the near gripper
     # at the seat's height the near span is straight to within its planned
     # slack (its turn into the slot's line included) and the dip of the
     # push (a few mm), never tens of mm
@@ -765,7 +767,7 @@ def test_c_is_refused_where_its_grippers_would_run_into_a_peg_on_the_way(y: floa
 
     Random board 1652323633's C into F7 carried the far gripper's tail into
     peg F8 (66 N); the planner names the peg instead. The far gripper ends
-    60 mm past the seat (y = 0.33).
+    60 mm past the seat along the slot, at (0.266, 0.328).
     """
     peg = BoardFixture("PX", "peg", (0.262, y, 0.05), radius=0.006, height=0.06)
     w1 = cable("W1", [RouteEntry("C5")])
@@ -1011,3 +1013,14 @@ def test_a_clip_after_a_turn_out_of_a_clip_is_judged_from_the_bend_s_corner(
     p = plan_routes(RouteProblem((BOARD[0], k1, k2), (w1,), ROBOT))
     (k2_step,) = [s for s in p.steps if s.params.get("clip") == "K2"]
     assert k2_step.primitive == f"{clipping}_clipping"
+
+
+def test_a_clip_too_far_across_the_cable_for_c_is_refused() -> None:
+    # C turns the line between its grippers onto the slot about the seat;
+    # 65 deg on, the near gripper's way crosses the clip (random board
+    # 701294796: 73 deg, 28.7 N true); 50 deg is still C's
+    w1 = cable("W1", [RouteEntry("ANG")], holds=(("left", 0.45),))
+    with pytest.raises(RouteError, match=r"65 deg across .* at most 59 deg; a peg before"):
+        plan_routes(RouteProblem((BOARD[0], _angled_clip(65.0)), (w1,), ROBOT))
+    p = plan_routes(RouteProblem((BOARD[0], _angled_clip(50.0)), (w1,), ROBOT))
+    assert names(p).count("parallel_clipping") == 1

@@ -91,6 +91,16 @@ SLOT_ANGLE = min(math.radians(13.0), MAX_SLOT_ANGLE)
 #: jaws); random boards missed clips at 11.6-18.7 deg. C holds the cable
 #: along the slot with both grippers (12, 13, 17 and -20 deg: clipped).
 F_ANGLE = math.radians(10.0)
+#: Largest angle [rad] between the slot and the cable at which C presses a
+#: cable in: C turns the line between its grippers onto the slot about the
+#: seat, and turned further the near gripper's way crosses the clip or the
+#: near span goes taut. Random boards (seeds 10-14) whose slot lay 60-86 deg
+#: across the cable failed C four times in six (14.4-14.6 N protective
+#: stops, a cable pulled out of the clip, and 28.7 N true on board
+#: 701294796, over the limit: the near gripper carried through the clip);
+#: every C up to 58 deg clipped (the stored boards 1045612557 and
+#: 1695658280 at 55 and 58 deg).
+C_ANGLE = math.radians(59.0)
 #: How far [m] a cable that turns out of a clip runs on along the slot past
 #: its exit before it turns: its straight span points back to a virtual
 #: corner this far ahead of the exit, not to the exit (random board
@@ -1506,6 +1516,13 @@ class _Planner:
                 self.steep_single += 1
             self.plan_single_clip(cable, clip, exit_point)
         else:
+            if angle > C_ANGLE:
+                raise self.fail(
+                    cable,
+                    f"the slot is {math.degrees(angle):.0f} deg across the cable's line from "
+                    f"{_fmt(c)} (C turns the cable onto a slot by at most "
+                    f"{math.degrees(C_ANGLE):.0f} deg; a peg before the clip would turn it)",
+                )
             other = self.other_arm_free(cable)
             if other is None:
                 raise self.fail(
