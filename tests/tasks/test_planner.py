@@ -1024,3 +1024,20 @@ def test_a_clip_too_far_across_the_cable_for_c_is_refused() -> None:
         plan_routes(RouteProblem((BOARD[0], _angled_clip(65.0)), (w1,), ROBOT))
     p = plan_routes(RouteProblem((BOARD[0], _angled_clip(50.0)), (w1,), ROBOT))
     assert names(p).count("parallel_clipping") == 1
+
+
+def test_random_board_355974382_never_pulls_the_cable_up_out_of_its_clip(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # the planner put the gripper at z = 185 mm after the slide out of F6
+    # (truly 104 mm) and its first move over F7 went to 159 mm: 20 deg over
+    # F6's exit, the cable came out of the 1.9 N clip (a false success)
+    from tautwire.tasks.planner import CLIP_RISE
+
+    states = _planned_states(monkeypatch, 355974382)
+    moves = [s for s in states if s[1] == "move" and s[6] in ("F6", "F7")]
+    assert moves  # the moves over F7, out of F6
+    for _, _, params, _, contact, _, _ in moves:
+        to = np.asarray(params["to"])
+        run = float(np.linalg.norm((to - contact)[:2]))
+        assert to[2] - contact[2] <= run * math.tan(CLIP_RISE) + 1e-3, to

@@ -1427,6 +1427,27 @@ class _Planner:
                     return Collision(span, float(gripper[2]), needed, "gripper")
         return None
 
+    def held_in_clip(self, cable: _Cable, point: FloatArray) -> FloatArray:
+        """``point`` [m], lowered where the cable would rise from its clip beyond ``CLIP_RISE``.
+
+        Out of a clip, a gripper higher than that pulls the cable up out of
+        the jaws (random board 355974382, seed 15: after the slide out of
+        F6 the planner put the gripper 80 mm higher than it was, at z =
+        185 mm, and the first move over F7 went up to 155 mm, 20 deg over
+        F6's exit; the cable came out of the 1.9 N clip, and the move ended
+        before the model saw it: a false success).
+        """
+        last = self.fixtures.get(cable.last) if cable.last else None
+        if last is None or last.kind != "clip":
+            return point
+        c = cable.contact
+        top = float(c[2]) + float(np.linalg.norm(_flat(point - c))) * math.tan(CLIP_RISE)
+        if float(point[2]) <= top:
+            return point
+        lowered = point.copy()
+        lowered[2] = top
+        return lowered
+
     def arc(
         self, c: FloatArray, start: FloatArray, end: FloatArray, sign: float
     ) -> list[FloatArray]:
@@ -1607,6 +1628,7 @@ class _Planner:
                 "board)",
             )
         waypoints = self.arc(c, cable.gripper, target, self.turn_sign(c, cable.gripper, target))
+        waypoints = [self.held_in_clip(cable, point) for point in waypoints]
         for point in waypoints:
             self.check_reach(cable, point, "bringing the cable over the clip")
         self.require_clear(
