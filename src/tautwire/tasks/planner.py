@@ -1470,8 +1470,8 @@ class _Planner:
 
     # -- clips
 
-    def slot_line(self, cable: _Cable, clip: BoardFixture) -> tuple[FloatArray, FloatArray, float]:
-        """The slot's direction away from the last fixed point, its exit, and the slot's angle."""
+    def slot_line(self, cable: _Cable, clip: BoardFixture) -> tuple[FloatArray, FloatArray]:
+        """The slot's direction away from the last fixed point, and its exit."""
         slot = np.array([math.cos(clip.yaw), math.sin(clip.yaw), 0.0])
         seat = _vec(clip.position)
         along = _flat(seat - cable.contact)
@@ -1479,11 +1479,10 @@ class _Planner:
             raise self.fail(cable, "the clip lies at the cable's last fixed point")
         if float(along @ slot) < 0.0:
             slot = -slot
-        angle = math.acos(min(1.0, float(_unit(along) @ slot)))
-        return slot, seat + 0.5 * clip.length * slot, angle
+        return slot, seat + 0.5 * clip.length * slot
 
     def advance_clip(self, cable: _Cable, clip: BoardFixture) -> None:
-        _, exit_point, _ = self.slot_line(cable, clip)
+        _, exit_point = self.slot_line(cable, clip)
         cable.s_contact += float(np.linalg.norm(exit_point - cable.contact))
         cable.contact = exit_point
         cable.lay(clip.name)
@@ -1506,7 +1505,7 @@ class _Planner:
         return math.acos(min(1.0, abs(float(along @ slot))))
 
     def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
-        slot, exit_point, _ = self.slot_line(cable, clip)
+        slot, exit_point = self.slot_line(cable, clip)
         angle = self.crossing(cable, clip, slot)
         seat = _vec(clip.position)
         c = cable.contact
@@ -1665,7 +1664,7 @@ class _Planner:
         """
         c = cable.contact
         seat = _vec(clip.position)
-        slot, _, _ = self.slot_line(cable, clip)
+        slot, _ = self.slot_line(cable, clip)
         top = exit_point.copy()
         top[2] = float(clip.position[2]) + JAW_TOP
         ahead = float(np.linalg.norm(_flat(aimed - top)))
@@ -1698,7 +1697,7 @@ class _Planner:
         """
         c = cable.contact
         seat = _vec(clip.position)
-        slot, _, _ = self.slot_line(cable, clip)
+        slot, _ = self.slot_line(cable, clip)
         exit_top = exit_point.copy()
         exit_top[2] = float(seat[2]) + JAW_TOP
         seat_over = seat + np.array([0.0, 0.0, ABOVE])
