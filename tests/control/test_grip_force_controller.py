@@ -77,6 +77,21 @@ def test_output_is_clamped() -> None:
     assert controller.update(-1000.0, 0.0, DT) == 0.0
 
 
+def test_grip_never_falls_below_its_floor_and_the_integral_does_not_wind_down() -> None:
+    # a tension spike far above f_slid (the cable caught beyond the gripper)
+    # would drive an unbounded grip to zero; the floor holds it, the integral
+    # (the friction learnt so far) does not wind down below the floor, and
+    # once the spike is gone the grip is back where the integral stands
+    controller = GripForceController(initial_grip_force=1.0, min_grip_force=0.75)
+    grips = [controller.update(1.5, 6.0, DT) for _ in range(500)]
+    assert min(grips) == pytest.approx(0.75)
+    assert 0.75 <= controller.integral <= 1.0
+    assert controller.update(1.5, 1.5, DT) == pytest.approx(controller.integral)
+    assert controller.update(1.5, 0.5, DT) > controller.integral - 0.01
+    unbounded = GripForceController(initial_grip_force=1.0)
+    assert min(unbounded.update(1.5, 6.0, DT) for _ in range(500)) == 0.0
+
+
 def test_anti_windup() -> None:
     # f_slid unreachable (above 2 mu F_max = 8 N) for 5 s, then reachable
     mu = 0.2
@@ -118,6 +133,9 @@ def test_reset() -> None:
         ({"k_p": -1.0}, "k_p"),
         ({"k_i": 0.0}, "k_i"),
         ({"max_grip_force": float("nan")}, "max_grip_force"),
+        ({"min_grip_force": -0.1}, "min_grip_force"),
+        ({"min_grip_force": 20.0}, "min_grip_force"),
+        ({"min_grip_force": 2.0, "initial_grip_force": 1.0}, "initial_grip_force"),
         ({"initial_grip_force": 30.0}, r"\[0, 20.0\]"),
     ],
 )

@@ -10,12 +10,20 @@ finger distance, so the same PI law here outputs the grip force F_grip [N]:
 
     F_grip = k_p e + k_i integral e dt,    e = f_slid - f_c,
 
-clamped to [0, max_grip_force] (YuMi SmartGripper: 20 N). Too little tension
+clamped to [min_grip_force, max_grip_force] (YuMi SmartGripper: 20 N). Too little tension
 (e > 0) means the cable slides too easily: the gripper squeezes harder. The
 integral absorbs the unknown friction coefficient (the paper: different cable
 thicknesses). Anti-windup: the integral is frozen while the output is
 saturated and the error pushes further into saturation, and it is kept in
-[0, max_grip_force].
+[min_grip_force, max_grip_force].
+
+The floor ``min_grip_force`` keeps the fingers on the cable: pads with lips
+hold a cable only while they squeeze it; with the grip near zero a hanging
+tail or a cable caught beyond the gripper wedges the fingers apart over the
+lips and the cable drops out (random boards 1548504588 and 1385678398, seed
+16: the grip fell to 0.0-0.4 N under a tension spike, the fingers opened
+from 4-6 mm to 7-9.5 mm and the cable left them). Below the floor the
+tension simply stays above f_slid.
 
 Stability with a sliding Coulomb contact, f_c = 2 mu F_grip (two finger pads,
 unknown mu), measured one period after the command: with g = 2 mu the error
@@ -45,11 +53,13 @@ class GripForceController:
         k_i: Integral gain [1/s], > 0.
         max_grip_force: Upper limit [N] of the grip-force command, > 0.
         initial_grip_force: Initial value [N] of the integral term (the grip
-            force at the start of sliding), in [0, max_grip_force].
+            force at the start of sliding), in [min_grip_force, max_grip_force].
+        min_grip_force: Lower limit [N] of the grip-force command, in
+            [0, max_grip_force).
 
     Raises:
         InvalidArgumentError: for a negative, zero or non-finite gain or limit,
-            or an initial grip force outside [0, max_grip_force].
+            or an initial grip force outside [min_grip_force, max_grip_force].
     """
 
     def __init__(
@@ -58,6 +68,7 @@ class GripForceController:
         k_i: float = 10.0,
         max_grip_force: float = YUMI_MAX_GRIP_FORCE,
         initial_grip_force: float = 0.0,
+        min_grip_force: float = 0.0,
     ) -> None:
         if not math.isfinite(k_p) or k_p < 0.0:
             raise InvalidArgumentError(f"k_p must be a finite gain >= 0 [N/N], got {k_p}")
@@ -67,13 +78,22 @@ class GripForceController:
             raise InvalidArgumentError(
                 f"max_grip_force must be a finite force > 0 [N], got {max_grip_force}"
             )
-        if not math.isfinite(initial_grip_force) or not 0.0 <= initial_grip_force <= max_grip_force:
+        if not math.isfinite(min_grip_force) or not 0.0 <= min_grip_force < max_grip_force:
             raise InvalidArgumentError(
-                f"initial_grip_force must be in [0, {max_grip_force}] N, got {initial_grip_force}"
+                f"min_grip_force must be in [0, {max_grip_force}) N, got {min_grip_force}"
+            )
+        if (
+            not math.isfinite(initial_grip_force)
+            or not min_grip_force <= initial_grip_force <= max_grip_force
+        ):
+            raise InvalidArgumentError(
+                f"initial_grip_force must be in [{min_grip_force:g}, {max_grip_force}] N,"
+                f" got {initial_grip_force}"
             )
         self.k_p = float(k_p)
         self.k_i = float(k_i)
         self.max_grip_force = float(max_grip_force)
+        self.min_grip_force = float(min_grip_force)
         self.initial_grip_force = float(initial_grip_force)
         self.integral = self.initial_grip_force
         self.grip_force = self.initial_grip_force
@@ -81,7 +101,7 @@ class GripForceController:
     def reset(self, grip_force: float | None = None) -> None:
         """Reset the integral to ``grip_force`` [N] (default: the initial grip force)."""
         value = self.initial_grip_force if grip_force is None else float(grip_force)
-        self.integral = min(max(value, 0.0), self.max_grip_force)
+        self.integral = min(max(value, self.min_grip_force), self.max_grip_force)
         self.grip_force = self.integral
 
     def update(self, f_slid: float, f_current: float, dt: float) -> float:
@@ -93,7 +113,7 @@ class GripForceController:
             dt: Control period [s], > 0.
 
         Returns:
-            Grip force command [N] in [0, max_grip_force].
+            Grip force command [N] in [min_grip_force, max_grip_force].
 
         Raises:
             InvalidArgumentError: if dt is not finite and positive.
@@ -103,8 +123,9 @@ class GripForceController:
         e = f_slid - f_current
         proportional = self.k_p * e
         saturated_high = proportional + self.integral >= self.max_grip_force and e > 0.0
-        saturated_low = proportional + self.integral <= 0.0 and e < 0.0
+        low = self.min_grip_force
+        saturated_low = proportional + self.integral <= low and e < 0.0
         if not (saturated_high or saturated_low):  # conditional integration (anti-windup)
-            self.integral = min(max(self.integral + self.k_i * e * dt, 0.0), self.max_grip_force)
-        self.grip_force = min(max(proportional + self.integral, 0.0), self.max_grip_force)
+            self.integral = min(max(self.integral + self.k_i * e * dt, low), self.max_grip_force)
+        self.grip_force = min(max(proportional + self.integral, low), self.max_grip_force)
         return self.grip_force

@@ -42,6 +42,14 @@ NOMINAL_FRICTION = 0.5
 #: Fraction of the nominal grip force to start with (low: the cable starts
 #: sliding at once instead of stretching against a grip that is too firm).
 START_GRIP = 0.7
+#: Fraction of the nominal grip force below which the grip never goes while
+#: sliding (:class:`~tautwire.control.GripForceController`'s floor): under a
+#: tension spike (the cable caught beyond the gripper, stick-slip round a
+#: peg) the PI law drove the grip to 0.0-0.4 N, the fingers opened over their
+#: lips and the cable dropped out (random boards 1548504588 and 1385678398).
+#: At the nominal friction the floor still lets the tension fall to half of
+#: f_slid; at a friction up to twice the nominal one it stays at f_slid.
+MIN_GRIP = 0.5
 #: Cable [m] that must remain beyond the sliding gripper at the end.
 MIN_BEYOND = 0.02
 
@@ -114,7 +122,9 @@ class SlidingPrimitive(Primitive):
         ctx.estimator.learn_elasticity = False
         ctx.estimator.rotation = None
         nominal = self.friction_force / (2.0 * NOMINAL_FRICTION)
-        self.grip = GripForceController(initial_grip_force=START_GRIP * nominal)
+        self.grip = GripForceController(
+            initial_grip_force=START_GRIP * nominal, min_grip_force=MIN_GRIP * nominal
+        )
         self.phase = "tension"
         self._tension_judge = TensionJudge(self.friction_force, 0.15, 0.2)
         self._slide_start = 0.0
