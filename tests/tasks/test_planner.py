@@ -1041,3 +1041,33 @@ def test_random_board_355974382_never_pulls_the_cable_up_out_of_its_clip(
         to = np.asarray(params["to"])
         run = float(np.linalg.norm((to - contact)[:2]))
         assert to[2] - contact[2] <= run * math.tan(CLIP_RISE) + 1e-3, to
+
+
+def test_random_board_1996406324_presses_a_clip_with_no_fixture_under_the_bend(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # seed 17: F into F4 with the gripper 176 mm past F4's exit and clip F5,
+    # at the same height, 124 mm on under the span: the span rested on F5
+    # (3.3 N) instead of bending over F4 (0.45 N) and slid off beside F4.
+    # Now the cable is handed over to a grasp short of F5 first.
+    from tautwire.scenario.route_problem import route_problem
+    from tautwire.tasks.planner import fixture_reach, segment_collision
+
+    board = route_problem(_board(1996406324)).fixtures
+    fixtures = {f.name: f for f in board}
+    states = _planned_states(monkeypatch, 1996406324)
+    push = next(
+        k for k, s in enumerate(states) if s[1] == "single_arm_clipping" and s[2]["clip"] == "F4"
+    )
+    gripper = states[push][3]
+    f4, f5 = fixtures["F4"], fixtures["F5"]
+    to_f5 = float(np.linalg.norm((np.asarray(f5.position) - np.asarray(f4.position))[:2]))
+    held = float(np.linalg.norm((gripper - np.asarray(f4.position))[:2]))
+    assert held < to_f5 - fixture_reach(f5)
+    assert any(s[1] == "grasp_tensioned" and s[0] == "W2" for s in states[:push])
+    # the check itself: the old grasp, 158 mm past the exit, its span turned
+    # onto F4's slot and bent down 10 deg over F4, lies on F5
+    slot = np.array([math.cos(f4.yaw), math.sin(f4.yaw), 0.0])
+    exit_top = np.asarray(f4.position) + 0.5 * f4.length * slot + np.array([0.0, 0.0, 0.008])
+    old = exit_top + 0.158 * (math.cos(0.17) * slot - math.sin(0.17) * np.array([0.0, 0.0, 1.0]))
+    assert segment_collision(exit_top, old, board, 0.002, frozenset({"F4"})) is not None

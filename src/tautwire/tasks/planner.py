@@ -1714,19 +1714,27 @@ class _Planner:
         sin_far = float(far[2]) / max(float(np.linalg.norm(far)), 1e-9)
         tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
         sin_snap = min(PRESS_MARGIN * clip.push_force / tension + sin_far, 1.0)
-        bottom = min(bottom, math.asin(max(sin_snap, -1.0)) + 2.0 * PRESS_EXTRA)
+        snap = math.asin(max(sin_snap, -1.0))
+        bottom = min(bottom, snap + 2.0 * PRESS_EXTRA)
         skip = self.overlapping(frozenset(n for n in (cable.last, clip.name) if n is not None))
         up = np.array([0.0, 0.0, 1.0])
         for out in (_unit(_flat(seat - c)), slot):
-            points = [
-                exit_top + reach * (math.cos(a) * out - math.sin(a) * up)
-                for a in np.linspace(top, max(bottom, top), 9)
-            ]
-            for point in points:
+            for a in np.linspace(top, max(bottom, top), 9):
+                point = exit_top + reach * (math.cos(a) * out - math.sin(a) * up)
                 # the gripper and its tail: the cable pressed onto this clip
-                # may rest on the next one's jaws (random board 208802845's
-                # F1 snapped in so), a gripper pressing onto it may not
+                # may rest on the next one's jaws once it is in (random board
+                # 208802845's F1 snapped in so), a gripper pressing onto it may not
                 hit = self.held_hit(cable, point, exit_top, skip)
+                if hit is None and a <= snap:
+                    # but not before: a span that rests on a fixture between
+                    # the clip and the gripper bends there, not over the clip
+                    # (random board 1996406324, seed 17: F4 held 176 mm past
+                    # its exit, F5 under the span 124 mm on at the same
+                    # height took 3.3 N, F4 0.45 N, and the cable slipped
+                    # off F5's jaws beside F4)
+                    hit = segment_collision(
+                        exit_top, point, self.problem.fixtures, cable.spec.radius, skip
+                    )
                 if hit is not None:
                     return hit
         return None
