@@ -41,6 +41,14 @@ PUSH_RATE = 0.15
 PRESS_EXTRA = 0.05
 #: Pushes before a cable that did not stay in counts as not clipped.
 ATTEMPTS = 3
+#: Times the cable, found beside the slot at rest after a push, is brought over
+#: the clip again (the alignment) and pushed anew. A cable left on the jaws'
+#: crest, not in, is drawn off them sideways by the tug that checks it (random
+#: board 1754934167, seed 17: read in at 5 mm over the seat, the tug drew it
+#: 9.6 mm beside the slot, and the next push took it down beside the clip).
+REALIGNS = 1
+#: Time [s] a new alignment adds to the primitive's timeout.
+REALIGN_TIME = 12.0
 #: Steepest angle [rad] of the cable below the clip before giving up.
 MAX_ANGLE = math.radians(60.0)
 #: Lowest height [m] above the table the gripper's tool centre point may go
@@ -118,7 +126,10 @@ class SingleArmClipping(Primitive):
     cable without trusting where it leaves the fingers; it then presses the
     cable home again and lifts back, and if the line still reaches the
     seat, the model gets a fixed point at q. If the line does not reach the
-    seat, it pushes again, deeper, up to ``ATTEMPTS`` times.
+    seat, it pushes again, deeper, up to ``ATTEMPTS`` times. Where the line
+    at rest passes the slot's exit beside the channel (beyond ``SIDEWAYS``),
+    or the tug turned the pull about the far contact, the cable is brought
+    over the clip again (the alignment) and pushed anew, ``REALIGNS`` times.
 
     Where no snap is felt down to ``MAX_ANGLE`` or the table
     (``TABLE_CLEARANCE``), it lifts back all the same and judges the line at
@@ -128,7 +139,7 @@ class SingleArmClipping(Primitive):
     Failure: ``not_clipped`` if the cable is not seated at rest after the last
     attempt (after a push with no snap felt, the message gives the planned
     press against the clip's push force), or the tug turned the pull about
-    the far contact;
+    the far contact after the new alignments;
     ``precondition`` if the clip is not between the contact and the gripper
     or its slot is across the cable, or the cable rises more
     than :data:`~tautwire.primitives.clip_sensing.MAX_FAR_RISE` from the
@@ -174,6 +185,7 @@ class SingleArmClipping(Primitive):
         self._deeper = 0.0  # the snap counts only beyond this pivot angle [rad]
         self._pressed_to = 0.0
         self.attempts = 1
+        self.realigns = 0
         self.floor = TABLE_CLEARANCE  # the board is the plane z = 0
         self._at_floor: float | None = None  # when the push's set point reached the floor
         self._axis = ToolAxis()
@@ -622,6 +634,8 @@ class SingleArmClipping(Primitive):
                     self._tug.mark_rest(me.position)
                     self._line_at_rest = self.sensing.verdict(self.clip).detail
                     self.phase, self._reached = "tug", None
+                elif self._beside() and self.realigns < REALIGNS:
+                    self._realign()
                 elif self.attempts >= ATTEMPTS:
                     self._verify(ctx)
                 else:  # not in: push again, deeper than the last time (and tug again)
@@ -650,6 +664,9 @@ class SingleArmClipping(Primitive):
         reading = self._tug.reading(p_gripper, self._exit, self._far())
         self._tug_reading = reading
         if reading.distinct and not reading.holds:
+            if self.realigns < REALIGNS:
+                self._realign()
+                return
             self.outcome = Outcome.failure(
                 "not_clipped",
                 f"the cable is not held by {self.clip}: {reading.describe()}; at rest the"
@@ -660,6 +677,26 @@ class SingleArmClipping(Primitive):
         # throat up by 1-2 mm: Table I F seed 0 trial 0, and after it I's
         # estimate of the clip 3.9 mm off, 1.7 mm without the tug)
         self.phase = "press"
+
+    def _beside(self) -> bool:
+        """Whether the force's line, at rest, passes the slot's exit beside the channel."""
+        return self.sensing.miss is not None and self.sensing.miss > SIDEWAYS
+
+    def _realign(self) -> None:
+        """Bring the cable over the clip again (the alignment), then push anew.
+
+        The alignment lifts the cable to ``ABOVE`` over the seat, clear of
+        the jaws, and puts its line over the seat again; the push then
+        starts from its beginning, with its attempts.
+        """
+        self.realigns += 1
+        self.attempts = 1
+        self.timeout += REALIGN_TIME
+        self.phase = "align"
+        self._no_snap = ""
+        self._at_floor = None
+        self._tug_reading = None
+        self._reached = None
 
     def _verify(self, ctx: PrimitiveContext) -> None:
         """The verdict: the force's line at rest after the tug and the press home, and the tug.
