@@ -204,3 +204,28 @@ def test_a_taut_move_crosses_a_peg_in_its_way_over_its_top() -> None:
     assert report.success, report.detail
     assert passing and min(passing) > top + PEG_ABOVE - 0.004
     assert abs(robot.tension() - 3.0) < 0.6
+
+
+@pytest.mark.parametrize("leave_after", [None, 1.0, 1.1])
+def test_a_move_that_draws_the_cable_out_of_its_clip_fails_itself_not_the_next_step(
+    leave_after: float | None,
+) -> None:
+    # random board 355974382 (seed 15): a move over F7 drew the cable out of
+    # F6 shortly before it reached its target and reported success; the next
+    # step's lines found it. Leaving 1.1 s into this 1.3 s move, the move
+    # used to succeed with the cable out of C1; it now holds still at its
+    # target until the filter's leave check has had its lines
+    from .test_change_hypotheses import LEAVE_ANCHOR, LEAVE_CLIP, LEAVE_GRIPPER, LeavingRobot
+    from .test_change_hypotheses import _clip_context as clip_context
+
+    robot = LeavingRobot(LEAVE_ANCHOR, LEAVE_CLIP, None)
+    ctx = clip_context()
+    assert run_step(robot, make_primitive("single_arm_tension", arm="left", force=3.0), ctx).success
+    if leave_after is not None:
+        robot.leave_time = robot.time + leave_after
+    target = LEAVE_GRIPPER + np.array([0.0, -0.04, 0.0])
+    report = run_step(robot, Move("left", to=target.tolist()), ctx)
+    if leave_after is None:
+        assert report.success, report
+    else:
+        assert report.cause == "left_fixture" and "C1" in report.detail, report

@@ -445,6 +445,11 @@ class ModelEstimator:
         return i
 
     @property
+    def leaving(self) -> int:
+        """Force lines in a row saying the cable left its contact (``LEAVE_RUN``: it did)."""
+        return self._leaving
+
+    @property
     def contact_index(self) -> int | None:
         """Index of the constrained point the gripper's edge is taut against.
 

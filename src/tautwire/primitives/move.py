@@ -20,6 +20,7 @@ from tautwire.model.quaternion import as_quaternion
 from tautwire.primitives.arm_control import current_pose, tension_twist, with_pose
 from tautwire.primitives.context import PrimitiveContext
 from tautwire.primitives.low_pass import LowPass
+from tautwire.primitives.model_estimator import LEAVE_RUN
 from tautwire.primitives.outcome import Outcome
 from tautwire.primitives.primitive import Primitive
 from tautwire.primitives.slack_watch import SlackWatch
@@ -41,6 +42,10 @@ PEG_CLEARANCE = 0.02
 #: Height [m] over a peg's top at which the tool centre point passes it (the pads
 #: reach 8 mm below it).
 PEG_ABOVE = 0.015
+#: Longest time [s] a taut, observed move holds still at its target for the
+#: contact filter's leave check (``LEAVE_RUN`` iterations, twice that while
+#: lines say the cable left: 0.4-0.8 s at the runs' 0.04 s filter period).
+SETTLE_TIME = 1.0
 
 
 def peg_detour(
@@ -136,8 +141,16 @@ class Move(Primitive):
     Success: the position error (with ``taut``: its part across the
     cable) is within ``tolerance``, the orientation within
     ``angle_tolerance``, and with ``taut`` the cable is still taut (the
-    low-passed tension at least half its set point). Failure: ``slipped``
-    if a taut cable stays slack for a second; ``precondition``; ``timeout``.
+    low-passed tension at least half its set point); a taut move whose
+    lines are observed then holds still at its target for ``LEAVE_RUN``
+    contact-filter iterations (0.4 s), longer while lines say the cable
+    left its contact (up to twice that), so that a cable the move drew out
+    of a clip fails this move (``left_fixture``), not the next one: random
+    board 355974382 (seed 15) reported a move over F7 as a success with the
+    cable already out of F6, and the next step's lines found it. Failure:
+    ``slipped`` if a taut cable stays slack for a second;
+    ``left_fixture`` if the lines show the cable left a clip;
+    ``precondition``; ``timeout``.
 
     Args:
         arm: The gripper to move.
@@ -248,6 +261,23 @@ class Move(Primitive):
         self._tension: LowPass[float] = LowPass()
         self._slack = SlackWatch(1.0)
         self._axis = ToolAxis()
+        self._arrived: tuple[float, int] | None = None  # (time, filter iterations) at the target
+
+    def _settling(self, time: float, ctx: PrimitiveContext) -> bool:
+        """Whether a taut, observed move still holds still at its target for the leave check.
+
+        At most ``SETTLE_TIME`` [s]: where the filter takes no lines (a peg
+        contact, contacts not observed) its iterations do not advance.
+        """
+        est = ctx.estimator
+        if not (self.keeps_tension and self.observe and est.observe_contacts):
+            return False
+        if self._arrived is None:
+            self._arrived = (time, est.iterations)
+        if time - self._arrived[0] >= SETTLE_TIME:
+            return False
+        run = est.iterations - self._arrived[1]
+        return run < LEAVE_RUN or (est.leaving > 0 and run < 2 * LEAVE_RUN)
 
     @property
     def keeps_tension(self) -> bool:
@@ -300,6 +330,8 @@ class Move(Primitive):
         )
         turned = follows or turn <= self.angle_tolerance  # a follower's turn is G's job
         if self.error <= self.tolerance and turned and taut_enough:
+            if self._settling(obs.time, ctx):
+                return Command(twist)
             how = " across the cable, taut" if self.keeps_tension else ""
             caught = ""
             if self.catch is not None and self._sensing:
