@@ -620,6 +620,27 @@ def test_a_clip_beyond_f_angle_is_pressed_in_with_one_arm_when_the_other_is_busy
     assert "parallel_clipping" not in names(p)
 
 
+def test_a_clip_the_cable_reaches_crossing_and_rising_is_pressed_in_by_c_or_refused() -> None:
+    # crossing 9 deg (within F_ANGLE) and rising 12 deg (within MAX_FAR_RISE)
+    # from a high anchor: a 15 deg kink at the entry, where F missed 4 of 5
+    # clips after pegs (random boards 742683046, 1754934167, 446712009,
+    # 1531134256); C takes it where the other gripper is free
+    high = BoardFixture("AH", "anchor", (0.05, 0.20, 0.1039))
+    seat = (0.05 + 0.12 * math.cos(math.radians(9.0)), 0.20, 0.08)
+    clip = BoardFixture("K", "clip", seat, yaw=math.radians(9.0), push_force=2.0, length=0.03)
+    w1 = cable("W1", [RouteEntry("K")], start="AH", holds=(("left", 0.30),))
+    p = plan_routes(RouteProblem((high, clip), (w1,), ROBOT))
+    assert "single_arm_clipping" not in names(p)
+    assert names(p).count("parallel_clipping") == 1
+    w2 = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    with pytest.raises(RouteError, match=r"a kink of 1[45]\.\d deg at the entry \(F clips at"):
+        plan_routes(RouteProblem((high, BOARD[1], clip), (w1, w2), ROBOT))
+    # the same crossing from a level anchor: F
+    level = BoardFixture("AH", "anchor", (0.05, 0.20, 0.08))
+    p = plan_routes(RouteProblem((level, clip), (w1,), ROBOT))
+    assert names(p).count("single_arm_clipping") == 1
+
+
 @pytest.mark.parametrize("held", [0.30, 0.45, 0.55])
 def test_c_grasps_so_that_the_near_span_lies_straight_when_released(held: float) -> None:
     """C centres the cable between its grippers over the seat; the near span must not sag.
@@ -663,6 +684,7 @@ def test_a_slide_that_would_run_low_over_a_clip_is_lifted_first(
     """
     # C1 is 18 deg off the line from A1: F takes it here (the slide is the point)
     monkeypatch.setattr(planner, "SLOT_ANGLE", math.radians(20.0))
+    monkeypatch.setattr(planner, "F_KINK", math.radians(20.0))
     from tautwire.tasks.planner import CLIP_RISE
 
     c6 = BoardFixture("C6", "clip", (0.58, 0.20, 0.08), yaw=0.435, push_force=2.5, length=0.03)
@@ -696,6 +718,7 @@ def test_a_slide_straight_on_over_its_next_clip_passes_it_clear_first(
     """
     # C1 is 18 deg off the line from A1: F takes it here (the slide is the point)
     monkeypatch.setattr(planner, "SLOT_ANGLE", math.radians(20.0))
+    monkeypatch.setattr(planner, "F_KINK", math.radians(20.0))
     busy = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
     w1 = cable("W1", [RouteEntry("C1"), RouteEntry("C2")], length=0.9)
     p = plan_routes(RouteProblem(BOARD, (w1, busy), ROBOT))
@@ -841,13 +864,15 @@ def test_the_near_grasp_of_a_parallel_clip_counts_the_cable_as_the_model_does(
 
 
 def _planned_states(
-    monkeypatch: pytest.MonkeyPatch, seed: int
+    monkeypatch: pytest.MonkeyPatch, seed: int, only: str | None = None
 ) -> list[tuple[str, str, dict[str, object], np.ndarray, np.ndarray, float, str | None]]:
     """(cable, primitive, params, gripper, contact, free, last) at each planned step.
 
     The state is read when the step is emitted: before the planner moves
-    its gripper to where the step leaves it.
+    its gripper to where the step leaves it. With ``only``, the other
+    cables are left where they lie (their routes dropped).
     """
+
     states: list[tuple[str, str, dict[str, object], np.ndarray, np.ndarray, float, str | None]]
     states = []
     scenario = _board(seed)
@@ -868,7 +893,11 @@ def _planned_states(
         emit(self, cable, primitive, why, **params)
 
     monkeypatch.setattr(planner._Planner, "emit", spy)
-    plan_scenario(scenario)
+    problem = route_problem(scenario)
+    if only is not None:
+        cables = tuple(c if c.name == only else replace(c, route=()) for c in problem.cables)
+        problem = replace(problem, cables=cables)
+    plan_routes(problem)
     return states
 
 
@@ -964,13 +993,15 @@ def test_random_board_1135846973_ends_the_slide_out_of_f4_clear_of_f6(
 ) -> None:
     # the slide out of F4, turned aside to pass the board, ended 32 mm from
     # F6's centre (checked on the straight way only: 67 mm); the tail caught
-    # F6's jaws and the pull through the fingers rose to 8 N
+    # F6's jaws and the pull through the fingers rose to 8 N. (W1's route
+    # on this board is refused since F's gripper stands where the push
+    # tension stretches the cable to: planned alone, W2.)
     from tautwire.scenario.models import CLIP_LENGTH
     from tautwire.tasks.planner import SLIDE_CLEAR
 
     scenario = _board(1135846973)
     f6 = next(f for f in scenario.board.fixtures if f.name == "F6")
-    states = _planned_states(monkeypatch, 1135846973)
+    states = _planned_states(monkeypatch, 1135846973, only="W2")
     slides = [k for k, s in enumerate(states) if s[1] == "single_arm_sliding" and s[0] == "W2"]
     assert slides
     k = slides[0]
@@ -1013,6 +1044,25 @@ def test_a_clip_after_a_turn_out_of_a_clip_is_judged_from_the_bend_s_corner(
     p = plan_routes(RouteProblem((BOARD[0], k1, k2), (w1,), ROBOT))
     (k2_step,) = [s for s in p.steps if s.params.get("clip") == "K2"]
     assert k2_step.primitive == f"{clipping}_clipping"
+
+
+def test_c_after_a_sharp_turn_out_of_a_clip_is_refused() -> None:
+    # C's near gripper pulls the span round the last clip's exit sideways:
+    # after turns of 81-150 deg C stopped at the protective stop or missed
+    # (random boards 1942220284, 1053372611, 1160238227, 1672212970)
+    k1 = BoardFixture("K1", "clip", (0.20, 0.20, 0.08), yaw=0.0, push_force=2.0, length=0.03)
+    w1 = cable("W1", [RouteEntry("K1"), RouteEntry("K2")], holds=(("left", 0.45),))
+    for turn_deg, ok in ((-60.0, True), (-95.0, False)):
+        turn = math.radians(turn_deg)
+        seat = (0.215 + 0.15 * math.cos(turn), 0.20 + 0.15 * math.sin(turn), 0.08)
+        yaw = turn + math.radians(25.0)  # across the line: C, not F
+        k2 = BoardFixture("K2", "clip", seat, yaw=yaw, push_force=2.0, length=0.03)
+        problem = RouteProblem((BOARD[0], k1, k2), (w1,), ROBOT)
+        if ok:
+            assert names(plan_routes(problem)).count("parallel_clipping") == 1
+        else:
+            with pytest.raises(RouteError, match=r"turns 9\d deg out of K1 .*at most 80 deg"):
+                plan_routes(problem)
 
 
 def test_a_clip_too_far_across_the_cable_for_c_is_refused() -> None:
@@ -1071,3 +1121,26 @@ def test_random_board_1996406324_presses_a_clip_with_no_fixture_under_the_bend(
     exit_top = np.asarray(f4.position) + 0.5 * f4.length * slot + np.array([0.0, 0.0, 0.008])
     old = exit_top + 0.158 * (math.cos(0.17) * slot - math.sin(0.17) * np.array([0.0, 0.0, 1.0]))
     assert segment_collision(exit_top, old, board, 0.002, frozenset({"F4"})) is not None
+
+
+def test_random_board_1355239919_presses_f5_with_the_stretched_cable_clear_of_f6(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # seed 19: planned 45 mm short of F6's centre, the gripper pushing W2
+    # into F5 stood 25 mm further on (measured: the 0.38 m of cable from A2,
+    # 106 N axial, stretched under F's 7 N push tension), 21 mm from F6,
+    # and the tail pressed F6 with 12 N: 15.7 N true at the wrist
+    from tautwire.scenario.route_problem import route_problem
+    from tautwire.tasks.planner import GRIPPER_CLEARANCE, fixture_reach
+
+    fixtures = {f.name: f for f in route_problem(_board(1355239919)).fixtures}
+    states = _planned_states(monkeypatch, 1355239919)
+    pushes = [s for s in states if s[1] == "single_arm_clipping" and s[2]["clip"] == "F5"]
+    assert pushes
+    _, _, _, gripper, contact, _, _ = pushes[-1]  # the plan returned is the last planned
+    out = (gripper - contact)[:2] / np.linalg.norm((gripper - contact)[:2])
+    stood = gripper[:2] + 0.025 * out
+    f6 = fixtures["F6"]
+    assert np.linalg.norm(stood - np.asarray(f6.position[:2])) >= (
+        fixture_reach(f6) + GRIPPER_CLEARANCE
+    )

@@ -83,6 +83,17 @@ ParamValue = bool | float | str | list[float]
 #: 13.6 and 17.2 deg at c5c448e). F's own precondition is looser
 #: (``MAX_SLOT_ANGLE``, 25 deg).
 SLOT_ANGLE = min(math.radians(13.0), MAX_SLOT_ANGLE)
+#: Largest angle [rad] in space between the slot and the cable from the clip's
+#: entry to its last fixed point (the crossing in the top view and the rise
+#: to it together: cos = cos(crossing) cos(rise)) at which F is planned. The
+#: arm's bend turns the cable onto the slot on its own side; on the far side
+#: the cable kinks at the entry by this angle, sideways and down at once.
+#: Random boards (seeds 15-20) with a peg before the clip: F missed 4 of 5
+#: clips at 15.1-16.8 deg (crossings 8.9-12.9 deg, rises 10.4-12.6 deg: each
+#: within its own limit), the cable resting on the jaws' crest at the entry
+#: with 3 N on a 1.6 N clip; it seated 17 of the 18 at 10.2-14.8 deg whose
+#: outcome is known.
+F_KINK = math.radians(14.0)
 #: Beyond this angle [rad] between the slot and the cable, C clips where the
 #: other gripper is free, F only where it is not. One arm kinks the cable
 #: where it enters the clip, and only the far side's slope presses that end
@@ -101,6 +112,14 @@ F_ANGLE = math.radians(10.0)
 #: every C up to 58 deg clipped (the stored boards 1045612557 and
 #: 1695658280 at 55 and 58 deg).
 C_ANGLE = math.radians(59.0)
+#: Largest turn [rad] of the cable out of the clip it last left towards a
+#: clip C presses it into. C's near gripper holds the span that bends round
+#: the last clip's exit and pulls it sideways there: on random boards
+#: (seeds 10-20) C after turns of 81-150 deg stopped at 13.7-14.4 N (the
+#: protective stop: 1942220284, 1053372611, 1160238227) or missed the clip
+#: (1672212970) 4 times in the 5 whose outcome is known; after turns of
+#: 61-80 deg it missed once in 10 (544908519 at 73 deg).
+C_TURN = math.radians(80.0)
 #: How far [m] a cable that turns out of a clip runs on along the slot past
 #: its exit before it turns: its straight span points back to a virtual
 #: corner this far ahead of the exit, not to the exit (random board
@@ -727,6 +746,10 @@ class _Cable:
     pressed: FloatArray | None = None
     #: The cable laid so far: the fixed points it leaves, by fixture, from its start.
     laid: list[tuple[str, FloatArray]] = field(default_factory=list)
+    #: Arc length [m] from which the cable stretches under the gripper's pull:
+    #: its start, or the last peg it is wound round a full turn (clips and
+    #: pegs it bends over let it slide through).
+    s_held: float = 0.0
 
     def lay(self, fixture: str) -> None:
         """The cable now leaves ``fixture`` at ``contact``: the last fixed point it is laid to."""
@@ -1149,6 +1172,8 @@ class _Planner:
         # about 108 mm and rose 16.7 deg to the next clip, too steep for F)
         cable.contact[2] = z_pass + crossings * LEAVE_CLIMB * 2.0 * cable.spec.radius
         cable.lay(peg.name)
+        if entry.wind:
+            cable.s_held = cable.s_contact  # a full turn holds the cable by its friction
 
     def peg_motion(
         self,
@@ -1504,6 +1529,20 @@ class _Planner:
         along = _unit(_flat(_vec(clip.position) - far))
         return math.acos(min(1.0, abs(float(along @ slot))))
 
+    def turn_out_of_clip(self, cable: _Cable, clip: BoardFixture) -> float:
+        """The turn [rad] the cable makes out of the clip it last left towards ``clip``'s seat.
+
+        0 where it last left no clip.
+        """
+        last = None if cable.last is None else self.fixtures.get(cable.last)
+        if last is None or last.kind != "clip":
+            return 0.0
+        way = _flat(cable.contact - _vec(last.position))
+        line = _flat(_vec(clip.position) - cable.contact)
+        if float(np.linalg.norm(way)) < 1e-9 or float(np.linalg.norm(line)) < 1e-9:
+            return 0.0
+        return math.acos(min(1.0, max(-1.0, float(_unit(way) @ _unit(line)))))
+
     def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
         slot, exit_point = self.slot_line(cable, clip)
         angle = self.crossing(cable, clip, slot)
@@ -1531,6 +1570,18 @@ class _Planner:
                     f"{self.why_other_busy(cable)}",
                 )
             single = False
+        kink = math.acos(min(1.0, math.cos(angle) * math.cos(rise)))
+        if single and kink > F_KINK:
+            if not self.other_arm_available(cable):
+                raise self.fail(
+                    cable,
+                    f"the cable reaches the clip {math.degrees(angle):.1f} deg across its slot "
+                    f"and rising {math.degrees(rise):.1f} deg from its last fixed point at "
+                    f"{_fmt(c)}: a kink of {math.degrees(kink):.1f} deg at the entry (F clips "
+                    f"at most {math.degrees(F_KINK):.0f} deg) and C needs the other gripper, "
+                    f"but {self.why_other_busy(cable)}",
+                )
+            single = False
         if single:
             if angle > F_ANGLE:
                 self.steep_single += 1
@@ -1542,6 +1593,14 @@ class _Planner:
                     f"the slot is {math.degrees(angle):.0f} deg across the cable's line from "
                     f"{_fmt(c)} (C turns the cable onto a slot by at most "
                     f"{math.degrees(C_ANGLE):.0f} deg; a peg before the clip would turn it)",
+                )
+            turn = self.turn_out_of_clip(cable, clip)
+            if turn > C_TURN:
+                raise self.fail(
+                    cable,
+                    f"the cable turns {math.degrees(turn):.0f} deg out of {cable.last} towards "
+                    f"the clip (C clips at most {math.degrees(C_TURN):.0f} deg on from a clip; "
+                    "a peg between would take the turn)",
                 )
             other = self.other_arm_free(cable)
             if other is None:
@@ -1701,7 +1760,18 @@ class _Planner:
         exit_top = exit_point.copy()
         exit_top[2] = float(seat[2]) + JAW_TOP
         seat_over = seat + np.array([0.0, 0.0, ABOVE])
-        start = c + _unit(seat_over - c) * (float(np.linalg.norm(exit_point - c)) + r)
+        tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
+        # the gripper stands where the cable, stretched by F's push tension,
+        # is taut: on along it by the stretch of all the cable from its start
+        # or a full winding (the clips before let it slide). Random board
+        # 1355239919 (seed 19): F5 planned 45 mm short of F6's centre, the
+        # cable (0.38 m of it to the start, 106 N axial) stretched 25 mm at
+        # the 7 N push, the gripper stood 21 mm from F6 and the tail
+        # pressed F6 with 12 N
+        to_exit = float(np.linalg.norm(exit_point - c))
+        held = cable.s_contact + to_exit + r - cable.s_held  # the stretching length
+        stretch = tension * held / max(cable.spec.stiffness * cable.spec.length, 1e-9)
+        start = c + _unit(seat_over - c) * (to_exit + r + stretch)
         reach = float(np.linalg.norm(start - exit_top))  # F keeps this radius
         top = math.atan2(
             -float(start[2] - exit_top[2]), float(np.linalg.norm(_flat(start - exit_top)))
@@ -1712,7 +1782,6 @@ class _Planner:
         # with the margin at the push tension, and a press beyond it
         far = c - exit_top
         sin_far = float(far[2]) / max(float(np.linalg.norm(far)), 1e-9)
-        tension = push_tension(clip.push_force, self.problem.tension, self.robot.force_limit)
         sin_snap = min(PRESS_MARGIN * clip.push_force / tension + sin_far, 1.0)
         snap = math.asin(max(sin_snap, -1.0))
         bottom = min(bottom, snap + 2.0 * PRESS_EXTRA)
