@@ -821,10 +821,15 @@ def test_a_clip_the_cable_rises_to_too_steeply_for_f_gets_c_or_is_refused() -> N
     assert "holds W2" in err.reason and "\n" not in str(err)
 
 
-def test_a_slide_the_tail_cuts_to_a_few_millimetres_is_left_out() -> None:
+def test_a_slide_the_tail_cuts_to_a_few_millimetres_is_left_out(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
     # random board 1652323633: W1's slide before F2 needed 1.1 mm; every
     # longer one would have laid the hanging tail on a fixture, so the
-    # planner emitted a 1.1 mm slide, which ended before E judged anything
+    # planner emitted a 1.1 mm slide, which ended before E judged anything.
+    # (The board's full turn round F1 is wound 22 mm over the peg's top,
+    # beyond WIND_ABOVE since: the slide is planned as before without it.)
+    monkeypatch.setattr(planner, "WIND_ABOVE", 0.03)
     plan = plan_scenario(_board(1652323633))
     slides = [
         float(s.params["distance"])  # type: ignore[arg-type]
@@ -1044,6 +1049,14 @@ def test_a_clip_after_a_turn_out_of_a_clip_is_judged_from_the_bend_s_corner(
     p = plan_routes(RouteProblem((BOARD[0], k1, k2), (w1,), ROBOT))
     (k2_step,) = [s for s in p.steps if s.params.get("clip") == "K2"]
     assert k2_step.primitive == f"{clipping}_clipping"
+
+
+def test_a_full_turn_wound_high_over_the_peg_is_refused() -> None:
+    # random board 1761140914 (seed 21): W1 wound round F1 from 133 mm,
+    # 23 mm over its top, the wrap came off over the top at the turn's end
+    scenario = load_scenario(Path(__file__).parent / "data" / "board_1761140914.yaml")
+    with pytest.raises(RouteError, match=r"W1, route entry 1 \(F1\): winding a full turn .*23 mm"):
+        plan_scenario(scenario)
 
 
 def test_c_after_a_sharp_turn_out_of_a_clip_is_refused() -> None:

@@ -190,6 +190,14 @@ CATCH = math.radians(8.0)
 TOUCH = math.radians(5.0)
 #: Largest turn [rad] about the last fixed point between two move waypoints.
 SWEEP_STEP = math.radians(30.0)
+#: Highest [m] over a peg's top a gripper winds a full turn round it from.
+#: Higher, the span rising to the gripper lifts the wrap as it climbs its
+#: own strand, and it slips off over the top: on random boards (seeds
+#: 10-21) full turns wound from 131-137 mm round 110 mm pegs at radii of
+#: 243-274 mm went slack 3 times in 5 (630257320, 1546552617, 1761140914:
+#: the cable off the peg at the turn's end); the 38 wound from 109-124 mm
+#: whose outcome is known all held.
+WIND_ABOVE = 0.015
 #: Height [m] over a peg's top at which a lifted cable passes it.
 OVER_PEG = 0.02
 #: Steepest rise [rad] of a taut cable from the clip it last went into while
@@ -1129,6 +1137,14 @@ class _Planner:
                 f"the cable from {_fmt(c)} can pass the peg only below z = {hi:.3f} m, and "
                 f"the gripper would go down to z = {motion.z_grip:.3f} m (expected at least "
                 f"{TABLE_CLEARANCE:g} m above the board)",
+            )
+        if entry.wind and motion.rest > SMALL_TURN and motion.z_grip > top + WIND_ABOVE:
+            raise self.fail(
+                cable,
+                f"winding a full turn with the gripper at z = {motion.z_grip:.3f} m, "
+                f"{(motion.z_grip - top) * 1e3:.0f} mm over the peg's top (expected at most "
+                f"{WIND_ABOVE * 1e3:.0f} mm: higher, the span lifts the wrap off the peg; the "
+                "cable passes the peg no lower clear of the board)",
             )
         for point, _ in motion.moves:
             self.check_reach(cable, point, "catching the peg")
