@@ -1559,6 +1559,20 @@ class _Planner:
             return 0.0
         return math.acos(min(1.0, max(-1.0, float(_unit(way) @ _unit(line)))))
 
+    def beyond_f(self, cable: _Cable, single: bool, beyond: bool, why: str) -> bool:
+        """Whether F still presses the clip in where ``beyond`` says it is past one of F's limits.
+
+        Past it, C does where the other gripper can; else the route is
+        refused: ``why`` (the limit passed) and what keeps the other gripper.
+        """
+        if not (single and beyond):
+            return single
+        if not self.other_arm_available(cable):
+            raise self.fail(
+                cable, f"{why} and C needs the other gripper, but {self.why_other_busy(cable)}"
+            )
+        return False
+
     def plan_clip(self, cable: _Cable, clip: BoardFixture) -> None:
         slot, exit_point = self.slot_line(cable, clip)
         angle = self.crossing(cable, clip, slot)
@@ -1574,30 +1588,25 @@ class _Planner:
             )
         single = angle <= F_ANGLE or (angle <= SLOT_ANGLE and not self.other_arm_available(cable))
         rise = far_rise(c, seat, slot, 0.5 * clip.length)
-        if single and rise > MAX_FAR_RISE:
-            # F's own precondition: steeper, the far side holds the slot's
-            # entry end up in the jaws' throat (single_arm_clipping.py)
-            if not self.other_arm_available(cable):
-                raise self.fail(
-                    cable,
-                    f"the cable rises {math.degrees(rise):.1f} deg from the clip to its last "
-                    f"fixed point at {_fmt(c)} (F clips at most "
-                    f"{math.degrees(MAX_FAR_RISE):.0f} deg) and C needs the other gripper, but "
-                    f"{self.why_other_busy(cable)}",
-                )
-            single = False
+        # F's own precondition: steeper, the far side holds the slot's entry
+        # end up in the jaws' throat (single_arm_clipping.py)
+        single = self.beyond_f(
+            cable,
+            single,
+            rise > MAX_FAR_RISE,
+            f"the cable rises {math.degrees(rise):.1f} deg from the clip to its last fixed "
+            f"point at {_fmt(c)} (F clips at most {math.degrees(MAX_FAR_RISE):.0f} deg)",
+        )
         kink = math.acos(min(1.0, math.cos(angle) * math.cos(rise)))
-        if single and kink > F_KINK:
-            if not self.other_arm_available(cable):
-                raise self.fail(
-                    cable,
-                    f"the cable reaches the clip {math.degrees(angle):.1f} deg across its slot "
-                    f"and rising {math.degrees(rise):.1f} deg from its last fixed point at "
-                    f"{_fmt(c)}: a kink of {math.degrees(kink):.1f} deg at the entry (F clips "
-                    f"at most {math.degrees(F_KINK):.0f} deg) and C needs the other gripper, "
-                    f"but {self.why_other_busy(cable)}",
-                )
-            single = False
+        single = self.beyond_f(
+            cable,
+            single,
+            kink > F_KINK,
+            f"the cable reaches the clip {math.degrees(angle):.1f} deg across its slot and "
+            f"rising {math.degrees(rise):.1f} deg from its last fixed point at {_fmt(c)}: a "
+            f"kink of {math.degrees(kink):.1f} deg at the entry (F clips at most "
+            f"{math.degrees(F_KINK):.0f} deg)",
+        )
         if single:
             if angle > F_ANGLE:
                 self.steep_single += 1
