@@ -6,7 +6,7 @@ reads, with torques; each row the mean over one contact-filter period, 40 ms,
 as the online filter fuses it, so its noise is the sensor's over sqrt(10) at
 4 ms control periods), ``run.png`` (force, tension against its set point and
 the contact error against time, steps marked) and ``model_views.png`` (the
-model over the true cable, from the top and the side); with ``--video`` also
+model of every cable over the true one, from the top and the side); with ``--video`` also
 ``run.gif`` and ``snapshot.png``; ``--rerun FILE.rrd`` records the run for
 the Rerun viewer.
 """
@@ -158,13 +158,15 @@ def run(
         result.files["plot"] = str(
             plot_run(folder / "run.png", trace, title=f"{scenario.name} (seed {result.seed})")
         )
+        graphs = result.models.graphs if result.models is not None else {trace.cable: ctx.graph}
+        cables = [(name, graph, truth.polyline(name)) for name, graph in graphs.items()]
         result.files["model_views"] = str(
             plot_model_views(
                 folder / "model_views.png",
-                ctx.graph,
-                truth.polyline(trace.cable),
+                cables,
                 world_fixtures,
-                title=f"{scenario.name}: the model at the end over the true cable",
+                title=f"{scenario.name}: the model{'s' if len(cables) > 1 else ''} at the end"
+                f" over the true cable{'s' if len(cables) > 1 else ''}",
             )
         )
         result.files["result"] = str(write_result(result, out_dir))

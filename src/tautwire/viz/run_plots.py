@@ -33,6 +33,8 @@ FloatArray = NDArray[np.float64]
 #: Marker of each fixture type in the views.
 FIXTURE_MARKERS = {"anchor": "s", "peg": "o", "clip": "D"}
 CABLE_COLOUR = (0.95, 0.55, 0.1)
+#: True cables of a run with several, in the scenario's order (the first is ``CABLE_COLOUR``).
+TRUE_CABLE_COLOURS = (CABLE_COLOUR, (0.35, 0.7, 0.95), (0.6, 0.8, 0.3), (0.85, 0.45, 0.65))
 
 
 def _save(fig: Figure, path: str | Path) -> Path:
@@ -131,38 +133,54 @@ def _ellipse(centre: FloatArray, cov: FloatArray, colour: tuple[float, ...]) -> 
 
 def plot_model_views(
     path: str | Path,
-    graph: PathGraph,
-    cable: ArrayLike,
+    cables: Sequence[tuple[str, PathGraph, ArrayLike]],
     fixtures: Mapping[str, tuple[str, ArrayLike]],
     title: str = "",
 ) -> Path:
-    """Write a PNG of the model over the true cable, from the top (x-y) and the side (x-z).
+    """Write a PNG of the models over the true cables, from the top (x-y) and the side (x-z).
 
     Args:
         path: Output PNG file.
-        graph: The robot's path graph.
-        cable: The simulated cable's polyline [m] (ground truth).  # (N, 3)
+        cables: Per cable: its name, the robot's path graph of it and the
+            simulated cable's polyline [m] (ground truth, (N, 3)). The true
+            cables take one colour each (the first the run plot's), named
+            in the legend where there are several.
         fixtures: The board: name -> (``anchor``/``peg``/``clip``, position [m]).
         title: Figure title.
 
     Returns:
         The path written.
     """
-    line = 1e3 * np.asarray(cable, dtype=float).reshape(-1, 3)
+    return _save(model_views_figure(cables, fixtures, title), path)
+
+
+def model_views_figure(
+    cables: Sequence[tuple[str, PathGraph, ArrayLike]],
+    fixtures: Mapping[str, tuple[str, ArrayLike]],
+    title: str = "",
+) -> Figure:
+    """The figure :func:`plot_model_views` writes (arguments as there)."""
     types = {name: kind for name, (kind, _) in fixtures.items()}
-    shapes = model_shapes(graph, types)
-    pts = 1e3 * shapes.points
+    drawn = [
+        (name, 1e3 * np.asarray(cable, dtype=float).reshape(-1, 3), model_shapes(graph, types))
+        for name, graph, cable in cables
+    ]
     fig = Figure(figsize=(11, 5.2), constrained_layout=True)
     views = fig.subplots(1, 2)
     for ax, (a, b), name in zip(views, ((0, 1), (0, 2)), ("top (x-y)", "side (x-z)"), strict=True):
-        ax.plot(line[:, a], line[:, b], color=CABLE_COLOUR, lw=3.0, label="true cable", zorder=1)
-        ax.plot(pts[:, a], pts[:, b], color="k", lw=1.0, label="model edges", zorder=2)
-        for p, colour in zip(pts, shapes.colours, strict=True):
-            ax.scatter(p[a], p[b], s=36, color=colour[:3], edgecolors="k", linewidths=0.6, zorder=4)
-        for e in shapes.ellipsoids:
-            cov = e.rotation @ np.diag((e.half_sizes / SIGMAS) ** 2) @ e.rotation.T
-            sub = 1e6 * cov[np.ix_((a, b), (a, b))]
-            ax.add_patch(_ellipse(1e3 * e.centre[[a, b]], sub, e.colour))
+        for k, (cable_name, line, shapes) in enumerate(drawn):
+            label = "true cable" if len(drawn) == 1 else f"true cable {cable_name}"
+            true_colour = TRUE_CABLE_COLOURS[k % len(TRUE_CABLE_COLOURS)]
+            ax.plot(line[:, a], line[:, b], color=true_colour, lw=3.0, label=label, zorder=1)
+            pts = 1e3 * shapes.points
+            edges = "model edges" if k == 0 else None
+            ax.plot(pts[:, a], pts[:, b], color="k", lw=1.0, label=edges, zorder=2)
+            for p, c in zip(pts, shapes.colours, strict=True):
+                ax.scatter(p[a], p[b], s=36, color=c[:3], edgecolors="k", linewidths=0.6, zorder=4)
+            for e in shapes.ellipsoids:
+                cov = e.rotation @ np.diag((e.half_sizes / SIGMAS) ** 2) @ e.rotation.T
+                sub = 1e6 * cov[np.ix_((a, b), (a, b))]
+                ax.add_patch(_ellipse(1e3 * e.centre[[a, b]], sub, e.colour))
         for fname, (kind, pos) in fixtures.items():
             p = 1e3 * np.asarray(pos, dtype=float)
             ax.scatter(
@@ -190,12 +208,13 @@ def plot_model_views(
         ax.grid(alpha=0.3)
     handles, _ = views[0].get_legend_handles_labels()
     seen: dict[str, RGBA] = {}
-    for colour, kind, label in zip(shapes.colours, shapes.kinds, shapes.labels, strict=True):
-        name = label.split(" ", 1)[-1] if kind != "gripper" else ""
-        key = f"{kind} point" + (f" ({types[name]})" if name in types else "")
-        seen.setdefault(key, colour)
+    for _, _, shapes in drawn:
+        for colour, kind, label in zip(shapes.colours, shapes.kinds, shapes.labels, strict=True):
+            name = label.split(" ", 1)[-1] if kind != "gripper" else ""
+            key = f"{kind} point" + (f" ({types[name]})" if name in types else "")
+            seen.setdefault(key, colour)
     for key, rgba in seen.items():
         handles.append(Line2D([], [], ls="", marker="o", color=rgba, mec="k", mew=0.6, label=key))
     views[0].legend(handles=handles, loc="best", fontsize=8)
     fig.suptitle(title or f"model (points, {SIGMAS:g}-sigma ellipses) over the true cable")
-    return _save(fig, path)
+    return fig
