@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -110,3 +111,17 @@ def test_the_followed_wrap_stays_with_the_peg_for_later_steps() -> None:
     est.rotation = (Z, 1.0)  # a new rotation, unwinding
     senses = _circle(est, np.linspace(0.3 - math.radians(350.0), -4.0, 50), distance)
     assert all(s == -1.0 for s in senses)  # still wound clockwise
+
+
+def test_span_length_runs_from_the_gripper_to_its_contact() -> None:
+    """k_hat is the stiffness of this span: the cable from the gripper to the point it pulls."""
+    graph = PathGraph.from_positions(
+        [ANCHOR, PEG, PEG + np.array([0.2, 0.0, 0.0]), PEG + np.array([0.6, 0.0, 0.0])],
+        mass_per_length=0.0,
+        kinds=["fixed", "contact", "gripper", "free"],
+        labels=["A1", "P1", "left", "end"],
+    )
+    est = make_context(graph, "left", round_fixtures={"P1": (PEG, RADIUS)}).estimator
+    assert est.span_length() == pytest.approx(0.2)
+    graph.points[1].kind = "free"  # no peg: the span runs back to the anchor
+    assert est.span_length() == pytest.approx(0.4)

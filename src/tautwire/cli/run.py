@@ -194,7 +194,8 @@ def run(
         )
     k = result.stiffness
     estimate, true = _newtons_per_metre(k["estimate"]), _newtons_per_metre(k["truth"])
-    out.print(f"stiffness: estimate {estimate}, truth {true}")
+    span = "-" if k["span"] is None else f"{k['span']:.3f} m"
+    out.print(f"stiffness: k_hat {estimate} over the model's span of {span}; the cable's k {true}")
     out.print(f"sim time {result.sim_time:.1f} s in {result.wall_time:.1f} s wall")
     return 0 if result.success else 1
 

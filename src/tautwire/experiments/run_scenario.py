@@ -165,6 +165,24 @@ def routed(graph: PathGraph, route: list[tuple[str, str | None]]) -> bool:
     return True
 
 
+def stiffness_report(ctx: PrimitiveContext | None, truth: float) -> dict[str, float | None]:
+    """A cable's stiffness as the run reports it.
+
+    ``estimate`` is k_hat [N/m], the stiffness of the sensing gripper's
+    span, whose cable length the model holds as ``span`` [m]
+    (:meth:`ModelEstimator.span_length`); ``truth`` is the whole cable's k
+    [N/m]. Where the span ends at an anchor or a grasp, k_hat estimates
+    ``truth`` * L / ``span`` for a cable of length L; a clip lets the cable
+    slide, and k_hat is softer. None where there is none.
+    """
+    k_hat = None if ctx is None else ctx.estimator.elasticity.k_hat
+    return {
+        "estimate": float(k_hat) if k_hat is not None and math.isfinite(k_hat) else None,
+        "span": None if ctx is None else ctx.estimator.span_length(),
+        "truth": truth,
+    }
+
+
 def score_cables(
     scenario: Scenario,
     models: CableModels,
@@ -189,15 +207,11 @@ def score_cables(
         shape = shape_deviations(graph, truth.polyline(spec.name))
         all_points += points
         all_shape.append(shape)
-        k_hat = None if ctx is None else ctx.estimator.elasticity.k_hat
         own = [r for r in reports if r.cable == spec.name]
         route: list[tuple[str, str | None]] = [(e.fixture, e.side) for e in spec.route]
         entry: dict[str, Any] = {
             "name": spec.name,
-            "stiffness": {
-                "estimate": float(k_hat) if k_hat is not None and math.isfinite(k_hat) else None,
-                "truth": truth.stiffness(spec.name),
-            },
+            "stiffness": stiffness_report(ctx, truth.stiffness(spec.name)),
             "model_error": deviation_summary(
                 [p.horizontal for p in points], [p.vertical for p in points]
             ),
@@ -318,7 +332,6 @@ def run_scenario(
     success = success and not any(
         c["route_done"] and not c["route_truth"]["agrees"] for c in cables
     )
-    k_hat = ctx.estimator.elasticity.k_hat
     contacts = [
         score
         for spec in scenario.cables
@@ -331,10 +344,7 @@ def run_scenario(
         success=success,
         steps=steps,
         contacts=contacts,
-        stiffness={
-            "estimate": float(k_hat) if math.isfinite(k_hat) else None,
-            "truth": truth.stiffness(first),
-        },
+        stiffness=stiffness_report(ctx, truth.stiffness(first)),
         model_error=model_all,
         max_force=max((r.max_force for r in reports), default=0.0),
         sim_time=sum(r.sim_time for r in reports),

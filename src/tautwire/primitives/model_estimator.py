@@ -1344,6 +1344,25 @@ class ModelEstimator:
             )
         return True
 
+    def span_length(self) -> float | None:
+        """Cable length [m] of the sensing gripper's span: from the gripper to its contact.
+
+        The elasticity estimate k_hat is that span's stiffness as the cable
+        presents it: EA / d where the contact holds the cable along itself
+        (an anchor, a grasp). A clip does not: the cable slides through its
+        jaws, and a tension's change stretches it back to the last point
+        that holds it (shipped harness, seed 2: D after C1 learnt 429 N/m on
+        a 0.251 m span from C1, where EA over the span plus the 0.12 m from
+        C1 back to the anchor is 431 N/m). None where no span ends at the
+        gripper.
+        """
+        g = self.graph.index_of("gripper", self.arm)
+        c = None if g is None else self._contact_index(g)
+        if g is None or c is None:
+            return None
+        s = self.graph.arc_lengths()
+        return abs(float(s[g] - s[c]))
+
     def trust_limit(self, point: FeaturePoint | None = None) -> float:
         """Largest std [m] at which the model trusts an estimate of ``point`` (default its own).
 
