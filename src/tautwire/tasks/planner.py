@@ -48,6 +48,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import TautwireError
+from tautwire.estimation.round_contact import DESIGN_TOLERANCE, RADIUS_MARGIN
 from tautwire.model.vector3 import nearest_on_segment
 from tautwire.primitives.clip_sensing import (
     JAW_TOP,
@@ -57,6 +58,7 @@ from tautwire.primitives.clip_sensing import (
     far_rise,
     push_tension,
 )
+from tautwire.primitives.model_estimator import LINE_HEIGHT_TOLERANCE
 from tautwire.primitives.move import PEG_ABOVE, PEG_CLEARANCE
 from tautwire.primitives.parallel_clipping import ABOVE as PARALLEL_ABOVE
 from tautwire.primitives.parallel_clipping import TABLE_CLEARANCE as PARALLEL_TABLE_CLEARANCE
@@ -198,6 +200,19 @@ SWEEP_STEP = math.radians(30.0)
 #: the cable off the peg at the turn's end); the 38 wound from 109-124 mm
 #: whose outcome is known all held.
 WIND_ABOVE = 0.015
+#: Height [m] by which a winding's span passes another peg above the band in
+#: which the model takes it for a contact on that peg. While I circles, a
+#: force line tangent to a peg of the design (within ``DESIGN_TOLERANCE``)
+#: whose height at the axis is at most the top plus the cable's radius,
+#: ``RADIUS_MARGIN`` and ``LINE_HEIGHT_TOLERANCE`` declares that peg the
+#: contact at once (``ModelEstimator._peg_change``). Random board 538472386
+#: (seed 24): I round F1 ended with its span 8-10 mm over F2's top, about 10
+#: mm beside F2's axis, clear of it by the sweep's 5 mm ``CLEARANCE``; a
+#: line met F2's axis 8.7 mm over its top, F2 became the model's contact
+#: though the cable never touched it, and I failed ``not_wound``. A span that
+#: passes another peg that near horizontally passes at least this much over
+#: the band (the lines' scatter in height at the peg: 1-3 mm).
+SENSED_MARGIN = 0.004
 #: Height [m] over a peg's top at which a lifted cable passes it.
 OVER_PEG = 0.02
 #: Steepest rise [rad] of a taut cable from the clip it last went into while
@@ -658,12 +673,15 @@ class Collision:
         needed: the least height [m] at which it clears the fixture's top.
         by: what runs into it: the taut ``cable``, the ``gripper`` (its
             fingers) or the ``cable's free tail`` beyond it.
+        sensed: the cable clears the fixture but passes it so near that the
+            model would take it for a contact there (:func:`sensed_peg_collision`).
     """
 
     fixture: str
     height: float
     needed: float
     by: Literal["cable", "gripper", "cable's free tail"] = "cable"
+    sensed: bool = False
 
 
 def _along(a: FloatArray, b: FloatArray, p: FloatArray) -> float:
@@ -703,6 +721,31 @@ def segment_collision(
         needed = top + cable_radius + CLEARANCE
         if height < needed:
             return Collision(fixture.name, height, needed)
+    return None
+
+
+def sensed_peg_collision(
+    start: FloatArray,
+    end: FloatArray,
+    fixtures: tuple[BoardFixture, ...],
+    cable_radius: float,
+    skip: frozenset[str] = frozenset(),
+) -> Collision | None:
+    """The peg (if any) that a winding's straight span from ``start`` to ``end`` looks bearing on.
+
+    The span need not touch it: passing within the peg's reach plus the
+    cable's radius, ``RADIUS_MARGIN`` and ``DESIGN_TOLERANCE`` of its axis
+    (horizontally) below its top plus the cable's radius, ``RADIUS_MARGIN``,
+    ``LINE_HEIGHT_TOLERANCE`` and ``SENSED_MARGIN``, its force lines can meet
+    the peg as the model tests them while I circles (see ``SENSED_MARGIN``).
+    Pegs of ``skip`` are not checked.
+    """
+    pegs = tuple(f for f in fixtures if f.kind == "peg")
+    room = cable_radius + RADIUS_MARGIN + DESIGN_TOLERANCE
+    for fixture, top, height in _fixtures_beside(start, end, pegs, room, skip):
+        needed = top + cable_radius + RADIUS_MARGIN + LINE_HEIGHT_TOLERANCE + SENSED_MARGIN
+        if height < needed:
+            return Collision(fixture.name, height, needed, sensed=True)
     return None
 
 
@@ -1103,6 +1146,15 @@ class _Planner:
                 f"this cable is routed: the cable passes it at z = {hit.height:.3f} m, above "
                 f"the bottom of its fingers at {hit.needed:.3f} m",
             )
+        if motion.collision is not None and motion.collision.sensed:
+            hit = motion.collision
+            raise self.fail(
+                cable,
+                f"{motion.what} passes the cable over {hit.fixture} at z = {hit.height:.3f} m, "
+                f"where its pull would read as bearing on {hit.fixture} (expected at least "
+                f"{hit.needed:.3f} m there), and the cable cannot pass the peg higher than "
+                f"z = {hi:.3f} m",
+            )
         if motion.collision is not None:
             hit = motion.collision
             why = f" ({climb * 1e3:.0f} mm lower, for the winding's climb over its own strand)"
@@ -1301,6 +1353,9 @@ class _Planner:
                     break
                 collision = (
                     segment_collision(
+                        pivot, point, self.problem.fixtures, cable.spec.radius, around
+                    )
+                    or sensed_peg_collision(
                         pivot, point, self.problem.fixtures, cable.spec.radius, around
                     )
                     or gripper_collision(point, self.problem.fixtures, around)
