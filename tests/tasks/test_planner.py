@@ -1169,13 +1169,16 @@ def test_random_board_538472386_winds_f1_with_its_span_clear_of_f2s_sensing_band
     from tautwire.primitives.model_estimator import LINE_HEIGHT_TOLERANCE
 
     spans: list[tuple[np.ndarray, np.ndarray]] = []
-    real = planner.sensed_peg_collision
+    real = planner.segment_collision
 
-    def spy(start, end, fixtures, radius, skip=frozenset()):  # type: ignore[no-untyped-def]
-        spans.append((np.asarray(start, dtype=float).copy(), np.asarray(end, dtype=float).copy()))
-        return real(start, end, fixtures, radius, skip)
+    def spy(start, end, fixtures, radius, skip=frozenset(), sensed=False):  # type: ignore[no-untyped-def]
+        if sensed:  # a winding's span
+            spans.append(
+                (np.asarray(start, dtype=float).copy(), np.asarray(end, dtype=float).copy())
+            )
+        return real(start, end, fixtures, radius, skip, sensed)
 
-    monkeypatch.setattr(planner, "sensed_peg_collision", spy)
+    monkeypatch.setattr(planner, "segment_collision", spy)
     scenario = _board(538472386)
     plan_scenario(scenario)
     fixtures = {f.name: f for f in route_problem(scenario).fixtures}

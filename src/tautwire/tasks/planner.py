@@ -674,7 +674,7 @@ class Collision:
         by: what runs into it: the taut ``cable``, the ``gripper`` (its
             fingers) or the ``cable's free tail`` beyond it.
         sensed: the cable clears the fixture but passes it so near that the
-            model would take it for a contact there (:func:`sensed_peg_collision`).
+            model would take it for a contact there (``segment_collision`` with ``sensed``).
     """
 
     fixture: str
@@ -709,6 +709,7 @@ def segment_collision(
     fixtures: tuple[BoardFixture, ...],
     cable_radius: float,
     skip: frozenset[str] = frozenset(),
+    sensed: bool = False,
 ) -> Collision | None:
     """The fixture (if any) that the straight cable from ``start`` to ``end`` runs into.
 
@@ -716,30 +717,21 @@ def segment_collision(
     when the segment passes within the fixture's reach plus the cable's radius
     (horizontally) below its top plus :data:`CLEARANCE`. The fixture of
     ``skip`` (the one the cable leaves or is aimed at) is not checked.
+
+    With ``sensed`` (a winding's span, which I's force lines sense), a peg is
+    in its way too where the span only looks bearing on it: passing within
+    the peg's reach plus the cable's radius, ``RADIUS_MARGIN`` and
+    ``DESIGN_TOLERANCE`` of its axis (horizontally) below its top plus the
+    cable's radius, ``RADIUS_MARGIN``, ``LINE_HEIGHT_TOLERANCE`` and
+    ``SENSED_MARGIN`` (see ``SENSED_MARGIN``); such a collision is marked
+    ``sensed``.
     """
     for fixture, top, height in _fixtures_beside(start, end, fixtures, cable_radius, skip):
         needed = top + cable_radius + CLEARANCE
         if height < needed:
             return Collision(fixture.name, height, needed)
-    return None
-
-
-def sensed_peg_collision(
-    start: FloatArray,
-    end: FloatArray,
-    fixtures: tuple[BoardFixture, ...],
-    cable_radius: float,
-    skip: frozenset[str] = frozenset(),
-) -> Collision | None:
-    """The peg (if any) that a winding's straight span from ``start`` to ``end`` looks bearing on.
-
-    The span need not touch it: passing within the peg's reach plus the
-    cable's radius, ``RADIUS_MARGIN`` and ``DESIGN_TOLERANCE`` of its axis
-    (horizontally) below its top plus the cable's radius, ``RADIUS_MARGIN``,
-    ``LINE_HEIGHT_TOLERANCE`` and ``SENSED_MARGIN``, its force lines can meet
-    the peg as the model tests them while I circles (see ``SENSED_MARGIN``).
-    Pegs of ``skip`` are not checked.
-    """
+    if not sensed:
+        return None
     pegs = tuple(f for f in fixtures if f.kind == "peg")
     room = cable_radius + RADIUS_MARGIN + DESIGN_TOLERANCE
     for fixture, top, height in _fixtures_beside(start, end, pegs, room, skip):
@@ -1353,10 +1345,7 @@ class _Planner:
                     break
                 collision = (
                     segment_collision(
-                        pivot, point, self.problem.fixtures, cable.spec.radius, around
-                    )
-                    or sensed_peg_collision(
-                        pivot, point, self.problem.fixtures, cable.spec.radius, around
+                        pivot, point, self.problem.fixtures, cable.spec.radius, around, sensed=True
                     )
                     or gripper_collision(point, self.problem.fixtures, around)
                     or self.tail_hit(cable, point, pivot, around)
