@@ -2,18 +2,11 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import pytest
 
-_PATH = Path(__file__).resolve().parents[2] / "bench" / "harness_physics.py"
-_SPEC = importlib.util.spec_from_file_location("bench_harness_physics", _PATH)
-assert _SPEC is not None and _SPEC.loader is not None
-harness_physics = importlib.util.module_from_spec(_SPEC)
-sys.modules["bench_harness_physics"] = harness_physics
-_SPEC.loader.exec_module(harness_physics)
+from tests.bench import load_script
+
+harness_physics = load_script("harness_physics")
 
 
 def test_the_first_step_is_timed_stage_by_stage() -> None:

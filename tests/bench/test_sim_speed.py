@@ -2,21 +2,12 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-from pathlib import Path
-
 import numpy as np
 
 from tautwire.sim.sim_robot import SimRobot
+from tests.bench import load_script
 
-# bench/ is not a package: load the script by its path (sys.path stays as it is)
-_PATH = Path(__file__).resolve().parents[2] / "bench" / "sim_speed.py"
-_SPEC = importlib.util.spec_from_file_location("bench_sim_speed", _PATH)
-assert _SPEC is not None and _SPEC.loader is not None
-sim_speed = importlib.util.module_from_spec(_SPEC)
-sys.modules["bench_sim_speed"] = sim_speed
-_SPEC.loader.exec_module(sim_speed)
+sim_speed = load_script("sim_speed")
 bare_twin, cable_world, circle_commands, measure = (
     sim_speed.bare_twin,
     sim_speed.cable_world,
