@@ -29,8 +29,8 @@ import os
 import platform
 from typing import Any
 
-import mujoco
-
+# tautwire.sim chooses MuJoCo's offscreen GL backend (EGL) before MuJoCo is
+# imported: this script imports mujoco only after it
 from tautwire.experiments.run_scenario import run_scenario
 from tautwire.scenario.loader import load_scenario, scenario_from_data
 from tautwire.scenario.registry import scenario_folder
@@ -39,6 +39,8 @@ from tautwire.scenario.writer import scenario_document
 
 def measure(steps: int, seed: int) -> dict[str, Any]:
     """Run the shipped harness's first ``steps`` steps; MuJoCo's counters."""
+    import mujoco
+
     document = scenario_document(load_scenario(scenario_folder() / "harness.yaml"))
     document["task"] = document["task"][:steps]
     scenario = scenario_from_data(document, source="harness (first steps)")
@@ -83,6 +85,8 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args()
     report = measure(args.steps, args.seed)
+    import mujoco
+
     report["machine"] = {
         "cpu": platform.processor() or platform.machine(),
         "cores": os.cpu_count(),

@@ -36,7 +36,7 @@ def test_a_fault_ends_in_the_table_with_its_cause(
     status = main(["run", str(_write(tmp_path, FROZEN))])
     captured = capsys.readouterr()
     assert status == 1 and "sensor_stale" in captured.out
-    assert "stiffness: estimate" in captured.out and "Traceback" not in captured.err
+    assert "stiffness: k_hat" in captured.out and "Traceback" not in captured.err
 
 
 def test_an_unexpected_exception_is_one_line_and_status_70(
