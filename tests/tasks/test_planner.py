@@ -1197,3 +1197,19 @@ def test_random_board_538472386_winds_f1_with_its_span_clear_of_f2s_sensing_band
             # the lines scatter 1-3 mm in height there: above the band by more
             assert a[2] + t * (b[2] - a[2]) >= band + 0.003
     assert near >= 1  # the winding's end still passes F2 that near: now well above the band
+
+
+def test_a_winding_that_cannot_rise_over_a_pegs_sensing_band_is_refused() -> None:
+    # board 538472386 with F1 10 mm lower: its winding cannot lift the span
+    # over F2's band, and the route is refused with both heights
+    data = yaml.safe_load((Path(__file__).parent / "data" / "board_538472386.yaml").read_text())
+    for fixture in data["board"]["fixtures"]:
+        if fixture["name"] == "F1":
+            fixture["height"] = 0.05
+    scenario = parse_scenario(yaml.safe_dump(data))
+    with pytest.raises(
+        RouteError,
+        match=r"W1, route entry 1 \(F1\): winding round the peg passes the cable by F2 at z = "
+        r"0\.1\d\d m, where its pull would read as bearing on F2 \(expected at least 0\.123 m",
+    ):
+        plan_scenario(scenario)

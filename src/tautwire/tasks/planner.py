@@ -1142,7 +1142,7 @@ class _Planner:
             hit = motion.collision
             raise self.fail(
                 cable,
-                f"{motion.what} passes the cable over {hit.fixture} at z = {hit.height:.3f} m, "
+                f"{motion.what} passes the cable by {hit.fixture} at z = {hit.height:.3f} m, "
                 f"where its pull would read as bearing on {hit.fixture} (expected at least "
                 f"{hit.needed:.3f} m there), and the cable cannot pass the peg higher than "
                 f"z = {hi:.3f} m",
