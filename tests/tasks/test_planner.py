@@ -975,6 +975,8 @@ def test_random_board_604736314_keeps_the_fingers_over_w1_s_laid_span(
     # it and the gripper truly pulled 38 N
     from tautwire.tasks.planner import CLEARANCE, FINGER_CLEARANCE, LAID_TRIM, PAD_DEPTH
 
+    # drawn before PEG_F_ANGLE: its F4 lies 10.6 deg across the line from peg F3
+    monkeypatch.setattr(planner, "PEG_F_ANGLE", planner.SLOT_ANGLE)
     scenario = _board(604736314)
     where = {f.name: np.asarray(f.position) for f in scenario.board.fixtures}
     w1 = next(c for c in scenario.cables if c.name == "W1")
@@ -1213,3 +1215,63 @@ def test_a_winding_that_cannot_rise_over_a_pegs_sensing_band_is_refused() -> Non
         r"0\.1\d\d m, where its pull would read as bearing on F2 \(expected at least 0\.123 m",
     ):
         plan_scenario(scenario)
+
+
+def test_random_board_1674132175_refuses_f_into_f3_beyond_peg_f_angle_from_peg_f2(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # seed 25: F pressed W1 into F3 10.5 deg across the line from peg F2 with
+    # the right gripper holding W2; the leave point moved round F2 by 2-3 mm,
+    # the cable met the jaws 1.5 mm off centre, its exit end outside a jaw's
+    # axis, and slid off beside the clip (not_clipped, honest)
+    with pytest.raises(
+        RouteError,
+        match=r"W1, route entry 3 \(F3\): the slot is 10\.5 deg across the cable's line from "
+        r"peg F2 \(F seats at most 10 deg from a peg, .*\) and C needs the other gripper, but "
+        r"the right gripper holds W2",
+    ):
+        plan_scenario(_board(1674132175))
+    # the same board with one arm allowed 13 deg from a peg, as from an anchor: F
+    monkeypatch.setattr(planner, "PEG_F_ANGLE", planner.SLOT_ANGLE)
+    steps = [s for s in plan_scenario(_board(1674132175)).steps if s.params.get("clip") == "F3"]
+    assert [s.primitive for s in steps] == ["single_arm_clipping"]
+
+
+@pytest.mark.parametrize("across", [12.0, -12.0])
+@pytest.mark.parametrize("other_free", [True, False])
+def test_a_clip_beyond_peg_f_angle_after_a_peg_is_pressed_in_by_c_or_refused(
+    across: float, other_free: bool
+) -> None:
+    # a clip 0.14 m past a peg, its slot 12 deg across the cable's tangent
+    # line from the peg: within SLOT_ANGLE (F from an anchor with the other
+    # gripper busy), beyond PEG_F_ANGLE from a peg
+    peg = BoardFixture("P", "peg", (0.10, 0.20, 0.05), radius=0.006, height=0.06)
+    tangent = math.asin((0.006 + 0.0025) / 0.14)  # the line leaves the peg's south side
+    clip = BoardFixture(
+        "K",
+        "clip",
+        (0.24, 0.20, 0.08),
+        yaw=tangent + math.radians(across),
+        push_force=2.0,
+        length=0.03,
+    )
+    start = BoardFixture("AP", "anchor", (0.06, 0.34, 0.08))
+    w1 = cable(
+        "W1", [RouteEntry("P", "left"), RouteEntry("K")], start="AP", holds=(("left", 0.45),)
+    )
+    if other_free:
+        p = plan_routes(RouteProblem((start, peg, clip), (w1,), ROBOT))
+        assert "single_arm_clipping" not in names(p)
+        assert names(p).count("parallel_clipping") == 1
+        return
+    w2 = cable("W2", [], start="A2", holds=(("right", 0.35),), length=0.6)
+    with pytest.raises(
+        RouteError,
+        match=r"W1, route entry 2 \(K\): the slot is 12\.0 deg across the cable's line from "
+        r"peg P \(F seats at most 10 deg from a peg",
+    ):
+        plan_routes(RouteProblem((start, peg, clip, BOARD[1]), (w1, w2), ROBOT))
+    # at 8 deg one arm presses it in
+    clip8 = replace(clip, yaw=tangent + math.radians(math.copysign(8.0, across)))
+    p = plan_routes(RouteProblem((start, peg, clip8, BOARD[1]), (w1, w2), ROBOT))
+    assert "single_arm_clipping" in names(p)

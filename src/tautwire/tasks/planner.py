@@ -104,6 +104,18 @@ F_KINK = math.radians(14.0)
 #: jaws); random boards missed clips at 11.6-18.7 deg. C holds the cable
 #: along the slot with both grippers (12, 13, 17 and -20 deg: clipped).
 F_ANGLE = math.radians(10.0)
+#: Beyond this angle [rad] between the slot and the cable from a peg, F is
+#: not planned (C where the other gripper is free, else the route is
+#: refused). A straight cable crossing a 30 mm clip at alpha passes its ends
+#: 15 mm tan(alpha) to either side, 2.6 mm at 10 deg: on the jaws' axes. From
+#: an anchor or a clip the cable's line is known and F aims it over the seat
+#: (seeds 24 and 25: 7 of 7 seated at 10.2-11.6 deg); a peg's leave point
+#: moves 2-3 mm round the peg as the tension and the gripper's pose change
+#: (random board 1674132175's F3 from peg F2: the taut line passed the axis
+#: 11.4 mm off at F's start, 9.0 mm off 1.6 s on), so the cable met the jaws
+#: 1.5 mm off centre, its exit end on the outer side of a jaw, and slid off.
+#: From a peg F seated 3 of 5 clips at 10.5-12.4 deg and every one below 10.
+PEG_F_ANGLE = F_ANGLE
 #: Largest angle [rad] between the slot and the cable at which C presses a
 #: cable in: C turns the line between its grippers onto the slot about the
 #: seat, and turned further the near gripper's way crosses the clip or the
@@ -1641,6 +1653,16 @@ class _Planner:
             f"the cable rises {math.degrees(rise):.1f} deg from the clip to its last fixed "
             f"point at {_fmt(c)} (F clips at most {math.degrees(MAX_FAR_RISE):.0f} deg)",
         )
+        last = None if cable.last is None else self.fixtures.get(cable.last)
+        if last is not None and last.kind == "peg":
+            single = self.beyond_f(
+                cable,
+                single,
+                angle > PEG_F_ANGLE,
+                f"the slot is {math.degrees(angle):.1f} deg across the cable's line from peg "
+                f"{last.name} (F seats at most {math.degrees(PEG_F_ANGLE):.0f} deg from a peg, "
+                "whose leave point moves round it by a few mm)",
+            )
         kink = math.acos(min(1.0, math.cos(angle) * math.cos(rise)))
         single = self.beyond_f(
             cable,
