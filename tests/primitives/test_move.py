@@ -229,3 +229,79 @@ def test_a_move_that_draws_the_cable_out_of_its_clip_fails_itself_not_the_next_s
         assert report.success, report
     else:
         assert report.cause == "left_fixture" and "C1" in report.detail, report
+
+
+def _stiff_swing(seed: int = 0) -> dict:
+    """A short stiff span (0.24 m of a 759 N cable, k about 3000 N/m) swung 85 mm round its anchor.
+
+    As random board 477145308's W2 before F5: its free 1 m tail lies on the
+    board and is dragged as the gripper swings.
+    """
+    anchor = np.array([0.10, -0.20, 0.08])
+    radius, start = 0.236, -0.70
+    end = start - 0.085 / radius
+    grip = anchor + np.array([radius * np.cos(start), radius * np.sin(start), 0.003])
+    to = anchor + np.array([radius * np.cos(end), radius * np.sin(end), 0.025])
+    return {
+        "version": 1,
+        "name": "stiff-swing",
+        "seed": seed,
+        "robot": {
+            "control_period": 0.004,
+            "force_limit": 15.0,
+            "sensor": {"arm": "both", "noise_force": 0.05, "noise_torque": 0.002},
+            "grippers": {
+                "right": {"position": [round(float(v), 4) for v in grip]},
+                "left": {"position": [0.30, 0.25, 0.12]},
+            },
+        },
+        "board": {"fixtures": [{"name": "A2", "type": "anchor", "position": anchor.tolist()}]},
+        "cables": [
+            {"name": "W2", "length": 1.289, "mass_per_length": 0.0461, "stiffness": 588.5,
+             "radius": 0.0022, "start": "A2", "held_by": {"arm": "right", "at": 0.248}},
+        ],
+        "task": [
+            {"primitive": "single_arm_tension", "arm": "right", "force": 3.0},
+            {"primitive": "move", "arm": "right", "to": [round(float(v), 4) for v in to]},
+        ],
+    }  # fmt: skip
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("capped", [True, False])
+def test_a_taut_move_swings_a_stiff_span_no_faster_than_its_force_loop_holds(
+    capped: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    pytest.importorskip("mujoco")
+    import tautwire.primitives.move as move
+    from tautwire.experiments.run_scenario import run_scenario
+    from tautwire.scenario.loader import scenario_from_data
+
+    if not capped:  # the arm's speed limit alone (0.1 m/s)
+        monkeypatch.setattr(move, "DIRECTION_LEAK", 1e-6)
+    lowest, speeds, caps = [np.inf], [], []
+    last: list[np.ndarray] = []
+
+    def tick(rec):  # type: ignore[no-untyped-def]
+        if rec.primitive.name != "move":
+            return
+        state = rec.context.estimator.state
+        lowest[0] = min(lowest[0], state.tension)
+        p = rec.observation.gripper("right").position.copy()
+        if last:
+            speeds.append(float(np.linalg.norm(p - last[0])) / rec.context.control_period)
+        last[:] = [p]
+        caps.append(rec.primitive.taut_speed(rec.context))
+
+    result, _, _ = run_scenario(scenario_from_data(_stiff_swing()), on_tick=tick)
+    report = result.steps[-1]
+    assert all(s["truth"]["agrees"] for s in result.steps)
+    if capped:
+        # k_hat about 3000 N/m: the loop holds half of 3 N against a 4 deg
+        # leak up to about 30 mm/s, a third of the arm's limit
+        assert max(caps) < 0.05
+        assert max(speeds) < 1.2 * max(caps)
+        assert report["outcome"] == "success", report
+        assert lowest[0] > 1.0
+    else:  # swung at the arm's limit, the tail's drag turns the pull and the span goes slack
+        assert report["outcome"] == "failure" and report["cause"] == "slipped", report

@@ -42,6 +42,18 @@ PEG_CLEARANCE = 0.02
 #: Height [m] over a peg's top at which the tool centre point passes it (the pads
 #: reach 8 mm below it).
 PEG_ABOVE = 0.015
+#: Share of a taut move's speed across the cable that the force loop must
+#: take up along it: the error of the measured direction (about 4 deg; the
+#: free tail dragged over the board turns the pull aside as the gripper
+#: swings it). The gripper crosses the cable at most as fast as the loop,
+#: at half the set point's error, takes up that share (:meth:`Move.taut_speed`):
+#: a stiff span holds its tension over a fraction of a millimetre. Random
+#: board 477145308's W2 (k_hat 2589 N/m, a 0.24 m span of a 759 N cable):
+#: swung at 87 mm/s, its tension fell from 2.9 to 0.3 N within 0.2 s and
+#: the move ended slack; at 40 mm/s it held.
+DIRECTION_LEAK = 0.07
+#: Slowest speed [m/s] the cap leaves a taut move (above ``TIMEOUT_SPEED``).
+MIN_TAUT_SPEED = 0.025
 #: Longest time [s] a taut, observed move holds still at its target for the
 #: contact filter's leave check (``LEAVE_RUN`` iterations, twice that while
 #: lines say the cable left: 0.4-0.8 s at the runs' 0.04 s filter period).
@@ -279,6 +291,35 @@ class Move(Primitive):
         run = est.iterations - self._arrived[1]
         return run < LEAVE_RUN or (est.leaving > 0 and run < 2 * LEAVE_RUN)
 
+    def taut_speed(self, ctx: PrimitiveContext) -> float:
+        """The fastest [m/s] the gripper may cross its taut cable.
+
+        Along the cable the force loop moves the gripper at k_f (f_d - f)
+        (k_f = lambda / k_hat, equ:force_controller); crossing the cable at
+        v, a direction error leaks ``DIRECTION_LEAK`` v along it. The loop
+        takes that up with a tension error of half the set point where
+        v <= f_d k_f / (2 ``DIRECTION_LEAK``): on a soft span the arm's
+        speed limit binds first, on a stiff one this does.
+        """
+        assert self.force is not None
+        gain = ctx.controller.force.gain(ctx.estimator.elasticity.k_trusted)
+        limit = ctx.limits.max_linear_speed[0 if self.arm == "left" else 1]
+        return max(MIN_TAUT_SPEED, min(0.5 * self.force * gain / DIRECTION_LEAK, float(limit)))
+
+    def _carrot(self, me: FloatArray, goal: FloatArray, ctx: PrimitiveContext) -> FloatArray:
+        """The set point [m] towards ``goal`` that keeps the approach within :meth:`taut_speed`.
+
+        The position controller runs at k_p (its error) [m/s]: a set point
+        at most ``taut_speed / k_p`` ahead of the gripper.
+        """
+        ahead = self.taut_speed(ctx) / ctx.controller.motion.k_p
+        way = goal - me
+        distance = float(np.linalg.norm(way))
+        if distance <= ahead:
+            return goal
+        carrot: FloatArray = me + way * (ahead / distance)
+        return carrot
+
     @property
     def keeps_tension(self) -> bool:
         """Whether the move keeps a held cable taut (force control along it)."""
@@ -307,7 +348,10 @@ class Move(Primitive):
             )
             if along is not None:
                 self._q_target = along
-        desired = with_pose(self._hold, self.arm, Pose(goal, self._q_target))
+        aim = goal
+        if state is not None and self.keeps_tension:
+            aim = self._carrot(me.position, goal, ctx)
+        desired = with_pose(self._hold, self.arm, Pose(aim, self._q_target))
         if state is not None and self.keeps_tension:
             twist = tension_twist(ctx, obs, self.arm, desired, self.force, state)
             d = state.direction
