@@ -109,7 +109,7 @@ F_ANGLE = math.radians(10.0)
 #: refused). A straight cable crossing a 30 mm clip at alpha passes its ends
 #: 15 mm tan(alpha) to either side, 2.6 mm at 10 deg: on the jaws' axes. From
 #: an anchor or a clip the cable's line is known and F aims it over the seat
-#: (seeds 24 and 25: 7 of 7 seated at 10.2-11.6 deg); a peg's leave point
+#: (seeds 24-26: 20 of 20 seated at 10.0-12.7 deg); a peg's leave point
 #: moves 2-3 mm round the peg as the tension and the gripper's pose change
 #: (random board 1674132175's F3 from peg F2: the taut line passed the axis
 #: 11.4 mm off at F's start, 9.0 mm off 1.6 s on), so the cable met the jaws
