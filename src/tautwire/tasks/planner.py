@@ -114,7 +114,7 @@ F_ANGLE = math.radians(10.0)
 #: (random board 1674132175's F3 from peg F2: the taut line passed the axis
 #: 11.4 mm off at F's start, 9.0 mm off 1.6 s on), so the cable met the jaws
 #: 1.5 mm off centre, its exit end on the outer side of a jaw, and slid off.
-#: From a peg F seated 3 of 5 clips at 10.5-12.4 deg and every one below 10.
+#: Seeds 24-25: from a peg F seated 3 of 5 clips at 10.5-12.4 deg, every one below.
 PEG_F_ANGLE = F_ANGLE
 #: Largest angle [rad] between the slot and the cable at which C presses a
 #: cable in: C turns the line between its grippers onto the slot about the
