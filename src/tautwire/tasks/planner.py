@@ -233,6 +233,16 @@ OVER_PEG = 0.02
 #: pulled across the slot too it comes out (random board 1808415002: lifted
 #: over F3 at 25 deg from F2 and 60 deg across its slot, W1 left F2, slack).
 CLIP_RISE = MAX_FAR_RISE
+#: Friction coefficient [-] the planner counts on between a cable and a peg it
+#: bends round (half the 0.2 of the world's pegs): a gripper that pulls the
+#: cable up more steeply than that holds it (:func:`peg_climb`) lifts it up
+#: the peg and off its top. Random board 250645250 (seed 26): W2 wound 27 deg
+#: round F4 (top at 110 mm), then lifted to 154 mm, 113 mm from F4, "to lift
+#: the cable clear of the board before sliding it out" (climb 0.38): MuJoCo
+#: had the cable off F4 at the move's end and the move found it slack. Over
+#: the 90 boards of seeds 24-26 every other move planned from a peg climbed
+#: at most 0.08, and all of those boards completed.
+PEG_HOLD_FRICTION = 0.1
 #: Step [rad] of the rise a gripper is lifted by, about the last fixed point,
 #: before a slide that would otherwise run into a fixture.
 LIFT_STEP = math.radians(2.0)
@@ -593,6 +603,33 @@ def fixture_reach(fixture: BoardFixture) -> float:
     return 0.5 * fixture.length
 
 
+def peg_climb(before: FloatArray, peg: BoardFixture, height: float, gripper: FloatArray) -> float:
+    """How hard a taut cable bent round ``peg`` at ``height`` [m] is pulled up it.
+
+    The cable comes from ``before`` [m] (the fixed point it leaves before
+    the peg) and goes to the gripper at ``gripper`` [m], with the same
+    tension on both sides. The result is the upward pull over the pull
+    against the peg (the normal force), both per unit tension: the cable
+    slides up the peg when it exceeds the friction coefficient. Negative
+    when the two sides pull it down.
+
+    Args:
+        before: The fixed point before the peg [m].
+        peg: The peg.
+        height: Height [m] of the cable on the peg.
+        gripper: The gripper's point [m].
+
+    Returns:
+        Upward pull over normal force [-].
+    """
+    at = np.array([peg.position[0], peg.position[1], height], dtype=float)
+    a = _unit(_vec(before) - at)
+    b = _unit(_vec(gripper) - at)
+    up = float(a[2] + b[2])
+    normal = float(np.linalg.norm(_flat(a + b)))
+    return up / max(normal, 1e-9)
+
+
 def gripper_collision(
     point: FloatArray, fixtures: tuple[BoardFixture, ...], skip: frozenset[str] = frozenset()
 ) -> Collision | None:
@@ -861,7 +898,20 @@ class _Planner:
         return RouteError(cable.spec.name, cable.entry, cable.fixture, reason)
 
     def emit_move(self, cable: _Cable, point: FloatArray, why: str, **params: ParamValue) -> None:
-        """A taut ``move`` of the cable's gripper to ``point`` [m]."""
+        """A taut ``move`` of the cable's gripper to ``point`` [m].
+
+        Raises:
+            RouteError: The move would pull the cable up off the peg it was
+                last laid round (:meth:`lifts_off_peg`).
+        """
+        climb = self.lifts_off_peg(cable, point)
+        if climb is not None:
+            raise self.fail(
+                cable,
+                f"to {why}, the gripper at z = {float(point[2]):.3f} m pulls the cable up "
+                f"{cable.last} with {climb:.2f} of its pull against the peg (expected at most "
+                f"{PEG_HOLD_FRICTION:g}: steeper, the cable slides up the peg and off its top)",
+            )
         self.emit(
             cable, "move", why, arm=cable.arm, to=[float(v) for v in point], taut=True, **params
         )
@@ -880,6 +930,25 @@ class _Planner:
         values["cable"] = cable.spec.name
         cable.steps.append(len(self.steps))
         self.steps.append(PlannedStep(primitive, values, why))
+
+    def lifts_off_peg(self, cable: _Cable, point: FloatArray) -> float | None:
+        """The climb (:func:`peg_climb`) of a gripper at ``point`` [m] lifting the cable off a peg.
+
+        None where it does not: the last fixed point is not a peg, the
+        cable is wound a full turn round it (the turn's friction holds it),
+        or the climb with the cable at the top of the peg's band (the
+        cable's radius and 3 mm under the top) is at most
+        ``PEG_HOLD_FRICTION``. The cable may slide up the peg on the way
+        there, no further.
+        """
+        last = self.fixtures.get(cable.last) if cable.last else None
+        if last is None or last.kind != "peg" or len(cable.laid) < 2:
+            return None
+        if cable.s_held == cable.s_contact:
+            return None
+        top = last.position[2] + last.height - cable.spec.radius - 0.003
+        climb = peg_climb(cable.laid[-2][1], last, top, point)
+        return climb if climb > PEG_HOLD_FRICTION else None
 
     def check_reach(self, cable: _Cable, point: FloatArray, what: str) -> None:
         if not self.robot.reach.contains([float(c) for c in point]):
@@ -2233,8 +2302,9 @@ class _Planner:
         every fixture and stay within reach. Where none does, the same
         rises turned aside about the vertical by ``SIDE_STEP`` steps up to
         ``SIDE_TURN`` (the smallest turn first): a fixture straight on along
-        the slide, the next clip of the route, is passed beside. None if
-        none does.
+        the slide, the next clip of the route, is passed beside. A lift that
+        would pull the cable up off the peg it was last laid round
+        (:meth:`lifts_off_peg`) is no candidate. None if none does.
         """
         c = cable.contact
         radius = float(np.linalg.norm(start - c))
@@ -2261,6 +2331,7 @@ class _Planner:
                 if (
                     self.robot.reach.contains([float(v) for v in lifted])
                     and self.robot.reach.contains([float(v) for v in out])
+                    and self.lifts_off_peg(cable, lifted) is None
                     and self.path_collision(cable, c, start, [lifted, out], skip, gripper_skip)
                     is None
                     and self.hanging_tail_hit(cable, lifted, out, distance) is None
