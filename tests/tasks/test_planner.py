@@ -1362,3 +1362,45 @@ def test_a_move_that_would_pull_the_cable_off_its_last_peg_is_refused() -> None:
     # level with the cable: no pull up
     p.emit_move(state, np.array([0.30, 0.131, 0.08]), "bring it along")
     assert p.steps[-1].params["to"] == [0.3, 0.131, 0.08]
+
+
+def test_a_hand_over_needed_near_the_first_grasp_grasps_the_margin_nearer_the_fixed_point() -> None:
+    # the grippers grasp at least GRASP_MARGIN apart: a grasp wanted 19 mm
+    # nearer the fixed point than the first gripper's goes 40 mm nearer
+    problem = RouteProblem(BOARD, (W1,), ROBOT)
+    p = planner._Planner(problem)
+    state = planner._Cable(W1, "left", 0.35, np.array([0.40, 0.20, 0.10]), np.zeros(3), 0.0)
+    state.contact = np.array([0.05, 0.20, 0.08])
+    state.lay("A1")
+    state.entry, state.fixture = 1, "C1"
+    p.hand_over(state, 0.331, "to press the clip clear", nearest=0.20)
+    grasp = [s for s in p.steps if s.primitive == "grasp_tensioned"]
+    assert [(s.params["arm"], s.params["at"]) for s in grasp] == [("right", 0.31)]
+    assert state.arm == "right" and state.at == pytest.approx(0.31)
+    # where that is nearer than the push allows, the route is refused
+    state = planner._Cable(W1, "left", 0.35, np.array([0.40, 0.20, 0.10]), np.zeros(3), 0.0)
+    state.contact = np.array([0.05, 0.20, 0.08])
+    state.lay("A1")
+    state.entry, state.fixture = 1, "C1"
+    p = planner._Planner(problem)
+    with pytest.raises(
+        RouteError,
+        match=r"W1, route entry 1 \(C1\): the gripper holds the cable 0\.350 m from its last "
+        r"fixed point, too far out to press the clip clear, and too near it for a hand-over "
+        r"\(expected the other gripper to grasp at least 0\.04 m from the first, between "
+        r"0\.320 m and 0\.310 m",
+    ):
+        p.hand_over(state, 0.331, "to press the clip clear", nearest=0.32)
+
+
+def test_random_board_973985212_is_refused_where_f1s_push_would_take_the_fingers_into_f3() -> None:
+    # seed 26: F1's push needed W1 held 19 mm nearer the clip to clear F3,
+    # 25 mm past the gripper along the cable; the hand-over was skipped as
+    # within the grippers' margin, and the fingers, pivoting down, pressed
+    # F3 until the protective stop (14.96 N measured, 14.9 N true). Held
+    # nearer by the margin, W1's sweep over F1 meets the parked gripper
+    with pytest.raises(
+        RouteError,
+        match=r"W1, route entry 1 \(F1\): pressing the cable into F1 takes the gripper into F3",
+    ):
+        plan_scenario(_board(973985212))

@@ -1815,8 +1815,16 @@ class _Planner:
         if self.press_plan(cable, clip, exit_point, r) < needed:
             # held too far out: grasp nearer with the other gripper
             r_ok = self.closest_press_radius(cable, clip, exit_point, r, needed)
-            self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip in")
-            r = cable.free - to_exit
+            if cable.s_contact + to_exit + r_ok < cable.at - GRASP_MARGIN:
+                # within the grippers' margin the press falls a little short
+                # of PRESS_MARGIN, and F judges the snap it gets at run time
+                self.hand_over(
+                    cable,
+                    cable.s_contact + to_exit + r_ok,
+                    "to press the clip in",
+                    nearest=cable.s_contact + to_exit + MIN_LEAD,
+                )
+                r = cable.free - to_exit
         hit = self.pivot_collision(cable, clip, exit_point, r)
         if hit is not None:
             r_ok = self.clear_pivot_radius(cable, clip, exit_point, r)
@@ -1835,7 +1843,21 @@ class _Planner:
                     f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {_needs(hit)} "
                     f"there, {why}",
                 )
-            self.hand_over(cable, cable.s_contact + to_exit + r_ok, "to press the clip clear")
+            self.hand_over(
+                cable,
+                cable.s_contact + to_exit + r_ok,
+                "to press the clip clear",
+                nearest=cable.s_contact + to_exit + MIN_LEAD,
+            )
+            r = cable.free - to_exit
+            hit = self.pivot_collision(cable, clip, exit_point, r)
+            if hit is not None:
+                raise self.fail(
+                    cable,
+                    f"pressing the cable into {clip.name} takes the {hit.by} into "
+                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {_needs(hit)} "
+                    f"there, held {r:.3f} m past the clip after the hand-over",
+                )
         seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
         target = c + _unit(seat_over - c) * cable.free
         if float(target[2]) < TABLE_CLEARANCE:
@@ -2377,8 +2399,17 @@ class _Planner:
         pivot = _vec(last.position) if last is not None and last.kind == "clip" else cable.contact
         return start + _unit(start - pivot) * distance
 
-    def hand_over(self, cable: _Cable, at: float, what: str) -> None:
-        """Hand the cable over: the other gripper grasps at ``at`` [m], the first lets go."""
+    def hand_over(self, cable: _Cable, at: float, what: str, nearest: float | None = None) -> None:
+        """Hand the cable over: the other gripper grasps at ``at`` [m], the first lets go.
+
+        The grippers grasp at least ``GRASP_MARGIN`` apart and from the last
+        fixed point; where ``at`` is nearer the first gripper than that, the
+        grasp goes that much nearer the fixed point, down to ``nearest`` [m]
+        (arc length; None: no nearer than ``at``).
+
+        Raises:
+            RouteError: No grasp keeps those distances.
+        """
         other = self.other_arm_free(cable)
         if other is None or other not in self.robot.sensors:
             raise self.fail(
@@ -2387,8 +2418,22 @@ class _Planner:
                 f"far out {what}, and no hand-over is possible: {self.why_other_busy(cable)}",
             )
         at = max(at, cable.s_contact + GRASP_MARGIN)
-        if at > cable.at - GRASP_MARGIN:
-            return
+        # the grippers grasp at least GRASP_MARGIN apart: a grasp needed
+        # nearer the first gripper than that goes that much nearer the fixed
+        # point (random board 973985212, seed 26: F1's push needed W1 held
+        # 19 mm nearer, the hand-over was skipped, and the fingers, pivoting
+        # down 25 mm from the next clip F3, pressed it at 15 N)
+        least = max(at if nearest is None else nearest, cable.s_contact + GRASP_MARGIN)
+        at = min(at, cable.at - GRASP_MARGIN)
+        if at < least - 1e-9:
+            raise self.fail(
+                cable,
+                f"the gripper holds the cable {cable.free:.3f} m from its last fixed point, too "
+                f"far out {what}, and too near it for a hand-over (expected the other gripper "
+                f"to grasp at least {GRASP_MARGIN:g} m from the first, between "
+                f"{least - cable.s_contact:.3f} m and {at - cable.s_contact:.3f} m from the "
+                "fixed point)",
+            )
         grasp = cable.contact + _unit(cable.gripper - cable.contact) * (at - cable.s_contact)
         self.emit(
             cable,
