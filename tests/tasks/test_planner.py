@@ -1367,22 +1367,21 @@ def test_a_move_that_would_pull_the_cable_off_its_last_peg_is_refused() -> None:
 def test_a_hand_over_needed_near_the_first_grasp_grasps_the_margin_nearer_the_fixed_point() -> None:
     # the grippers grasp at least GRASP_MARGIN apart: a grasp wanted 19 mm
     # nearer the fixed point than the first gripper's goes 40 mm nearer
-    problem = RouteProblem(BOARD, (W1,), ROBOT)
-    p = planner._Planner(problem)
-    state = planner._Cable(W1, "left", 0.35, np.array([0.40, 0.20, 0.10]), np.zeros(3), 0.0)
-    state.contact = np.array([0.05, 0.20, 0.08])
-    state.lay("A1")
-    state.entry, state.fixture = 1, "C1"
+    def held_from_a1() -> tuple[planner._Planner, planner._Cable]:
+        p = planner._Planner(RouteProblem(BOARD, (W1,), ROBOT))
+        state = planner._Cable(W1, "left", 0.35, np.array([0.40, 0.20, 0.10]), np.zeros(3), 0.0)
+        state.contact = np.array([0.05, 0.20, 0.08])
+        state.lay("A1")
+        state.entry, state.fixture = 1, "C1"
+        return p, state
+
+    p, state = held_from_a1()
     p.hand_over(state, 0.331, "to press the clip clear", nearest=0.20)
     grasp = [s for s in p.steps if s.primitive == "grasp_tensioned"]
     assert [(s.params["arm"], s.params["at"]) for s in grasp] == [("right", 0.31)]
     assert state.arm == "right" and state.at == pytest.approx(0.31)
     # where that is nearer than the push allows, the route is refused
-    state = planner._Cable(W1, "left", 0.35, np.array([0.40, 0.20, 0.10]), np.zeros(3), 0.0)
-    state.contact = np.array([0.05, 0.20, 0.08])
-    state.lay("A1")
-    state.entry, state.fixture = 1, "C1"
-    p = planner._Planner(problem)
+    p, state = held_from_a1()
     with pytest.raises(
         RouteError,
         match=r"W1, route entry 1 \(C1\): the gripper holds the cable 0\.350 m from its last "

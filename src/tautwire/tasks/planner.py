@@ -1837,12 +1837,7 @@ class _Planner:
                     f"hand-over is possible: {self.why_other_busy(cable)}"
                 )
             if why:
-                raise self.fail(
-                    cable,
-                    f"pressing the cable into {clip.name} takes the {hit.by} into "
-                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {_needs(hit)} "
-                    f"there, {why}",
-                )
+                raise self.pivot_error(cable, clip, hit, why)
             self.hand_over(
                 cable,
                 cable.s_contact + to_exit + r_ok,
@@ -1852,11 +1847,8 @@ class _Planner:
             r = cable.free - to_exit
             hit = self.pivot_collision(cable, clip, exit_point, r)
             if hit is not None:
-                raise self.fail(
-                    cable,
-                    f"pressing the cable into {clip.name} takes the {hit.by} into "
-                    f"{hit.fixture}: it passes at z = {hit.height:.3f} m, {_needs(hit)} "
-                    f"there, held {r:.3f} m past the clip after the hand-over",
+                raise self.pivot_error(
+                    cable, clip, hit, f"held {r:.3f} m past the clip after the hand-over"
                 )
         seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
         target = c + _unit(seat_over - c) * cable.free
@@ -1889,6 +1881,16 @@ class _Planner:
         cable.s_contact += to_exit
         cable.contact = exit_point
         cable.lay(clip.name)
+
+    def pivot_error(
+        self, cable: _Cable, clip: BoardFixture, hit: Collision, why: str
+    ) -> RouteError:
+        """The refusal of a clip whose push (F's pivot) runs into ``hit``, saying ``why``."""
+        return self.fail(
+            cable,
+            f"pressing the cable into {clip.name} takes the {hit.by} into {hit.fixture}: it "
+            f"passes at z = {hit.height:.3f} m, {_needs(hit)} there, {why}",
+        )
 
     def after_push(
         self, cable: _Cable, clip: BoardFixture, exit_point: FloatArray, aimed: FloatArray
