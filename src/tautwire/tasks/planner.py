@@ -1818,13 +1818,7 @@ class _Planner:
             if cable.s_contact + to_exit + r_ok < cable.at - GRASP_MARGIN:
                 # within the grippers' margin the press falls a little short
                 # of PRESS_MARGIN, and F judges the snap it gets at run time
-                self.hand_over(
-                    cable,
-                    cable.s_contact + to_exit + r_ok,
-                    "to press the clip in",
-                    nearest=cable.s_contact + to_exit + MIN_LEAD,
-                )
-                r = cable.free - to_exit
+                r = self.push_hand_over(cable, to_exit, r_ok, "to press the clip in")
         hit = self.pivot_collision(cable, clip, exit_point, r)
         if hit is not None:
             r_ok = self.clear_pivot_radius(cable, clip, exit_point, r)
@@ -1838,13 +1832,7 @@ class _Planner:
                 )
             if why:
                 raise self.pivot_error(cable, clip, hit, why)
-            self.hand_over(
-                cable,
-                cable.s_contact + to_exit + r_ok,
-                "to press the clip clear",
-                nearest=cable.s_contact + to_exit + MIN_LEAD,
-            )
-            r = cable.free - to_exit
+            r = self.push_hand_over(cable, to_exit, r_ok, "to press the clip clear")
             hit = self.pivot_collision(cable, clip, exit_point, r)
             if hit is not None:
                 raise self.pivot_error(
@@ -1881,6 +1869,16 @@ class _Planner:
         cable.s_contact += to_exit
         cable.contact = exit_point
         cable.lay(clip.name)
+
+    def push_hand_over(self, cable: _Cable, to_exit: float, r: float, what: str) -> float:
+        """Hand the cable over ``r`` [m] past the clip's exit for F's push; the new ``r`` [m].
+
+        At least ``MIN_LEAD`` past it; nearer where the grippers' margin
+        asks (:meth:`hand_over`).
+        """
+        at = cable.s_contact + to_exit
+        self.hand_over(cable, at + r, what, nearest=at + MIN_LEAD)
+        return cable.free - to_exit
 
     def pivot_error(
         self, cable: _Cable, clip: BoardFixture, hit: Collision, why: str
