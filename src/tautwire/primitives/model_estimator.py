@@ -933,9 +933,14 @@ class ModelEstimator:
         point = self._filter_point
         if peg is None and point is not None and point.label in self.round_fixtures:
             # a peg's lines are tangent to it: without a rotation's sense they
-            # cannot be placed on its axis; they do not count
+            # cannot be placed on its axis; they do not count. They still
+            # tell whether the cable left the peg (:meth:`_watch_leave`): a
+            # move that lifted the cable up the peg and off its top drew
+            # lines through the anchor before it, 26 mm off the peg, and the
+            # model kept the peg (a false success of the move)
             kf.predict()
-            return False
+            self._recent.append((p_line, f_mean))
+            return self._watch_leave(p_line, f_mean)
         # a pull that drops well below the tension it had (the cable caught
         # on a fingertip, a shake) pulls askew: its line says nothing of the contact
         pull = norm3(f_mean)

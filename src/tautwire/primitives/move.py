@@ -159,7 +159,11 @@ class Move(Primitive):
     left its contact (up to twice that), so that a cable the move drew out
     of a clip fails this move (``left_fixture``), not the next one: random
     board 355974382 (seed 15) reported a move over F7 as a success with the
-    cable already out of F6, and the next step's lines found it. Failure:
+    cable already out of F6, and the next step's lines found it. A cable
+    the move lifts up a peg and off its top leaves the model the same way,
+    the peg dropped (its lines, tangent to the peg, are watched for that
+    alone), and the move may still succeed: the model then says where the
+    cable is. Failure:
     ``slipped`` if a taut cable stays slack for a second;
     ``left_fixture`` if the lines show the cable left a clip;
     ``precondition``; ``timeout``.
