@@ -233,6 +233,18 @@ def test_a_move_that_draws_the_cable_out_of_its_clip_fails_itself_not_the_next_s
         assert report.cause == "left_fixture" and "C1" in report.detail, report
 
 
+def _robot(sensor: str, **grippers: np.ndarray) -> dict:
+    """A scenario's robot: 4 ms period, 15 N limit, the sensor on ``sensor``, grippers at [m]."""
+    return {
+        "control_period": 0.004,
+        "force_limit": 15.0,
+        "sensor": {"arm": sensor, "noise_force": 0.05, "noise_torque": 0.002},
+        "grippers": {
+            arm: {"position": [round(float(v), 4) for v in p]} for arm, p in grippers.items()
+        },
+    }
+
+
 def _stiff_swing(seed: int = 0) -> dict:
     """A short stiff span (0.24 m of a 759 N cable, k about 3000 N/m) swung 85 mm round its anchor.
 
@@ -248,15 +260,7 @@ def _stiff_swing(seed: int = 0) -> dict:
         "version": 1,
         "name": "stiff-swing",
         "seed": seed,
-        "robot": {
-            "control_period": 0.004,
-            "force_limit": 15.0,
-            "sensor": {"arm": "both", "noise_force": 0.05, "noise_torque": 0.002},
-            "grippers": {
-                "right": {"position": [round(float(v), 4) for v in grip]},
-                "left": {"position": [0.30, 0.25, 0.12]},
-            },
-        },
+        "robot": _robot("both", right=grip, left=np.array([0.30, 0.25, 0.12])),
         "board": {"fixtures": [{"name": "A2", "type": "anchor", "position": anchor.tolist()}]},
         "cables": [
             {"name": "W2", "length": 1.289, "mass_per_length": 0.0461, "stiffness": 588.5,
@@ -319,15 +323,7 @@ def _peg_lift(rise_to: float) -> dict:
         "version": 1,
         "name": "peg-lift",
         "seed": 0,
-        "robot": {
-            "control_period": 0.004,
-            "force_limit": 15.0,
-            "sensor": {"arm": "left", "noise_force": 0.05, "noise_torque": 0.002},
-            "grippers": {
-                "left": {"position": [round(float(v), 4) for v in grip]},
-                "right": {"position": [0.30, -0.25, 0.12]},
-            },
-        },
+        "robot": _robot("left", left=grip, right=np.array([0.30, -0.25, 0.12])),
         "board": {"fixtures": [
             {"name": "A1", "type": "anchor", "position": anchor.tolist()},
             {"name": "P", "type": "peg", "position": peg.tolist(), "radius": 0.006, "height": 0.06},
