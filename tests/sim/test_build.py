@@ -45,6 +45,7 @@ def test_spec_carries_every_scenario_field() -> None:
     assert spec.sensor_arms == ("left", "right")
     assert spec.noise_force == 0.05 and spec.noise_torque == 0.002 and spec.seed == 3
     assert [f.name for f in spec.fixtures] == ["A1", "P1", "C1"]
+    assert spec.start_at_rest  # a scenario's world starts a run (its tare)
     cable = spec.cables[0]
     assert (cable.start, cable.via, cable.holds[0].arm, cable.holds[0].at) == (
         "A1",

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -59,3 +61,17 @@ def test_route_leaves_a_held_point_along_the_tool_axis() -> None:
 def test_a_route_much_longer_than_the_cable_is_refused() -> None:
     with pytest.raises(SimulationError, match="stretched"):
         _vertices(_world(0.3))
+
+
+def test_a_run_refuses_a_route_that_starts_the_cable_stretched_naming_the_hold() -> None:
+    # The route A -> P -> fingers needs 0.3849 m of cable up to the hold.
+    # Held at 0.38 m the cable would start at about 1 N, far below the force
+    # limit but above its weight (0.11 N). A scenario's world starts a run,
+    # whose tare would take that pull for a sensor offset: it is refused.
+    # A bare world (no run, no tare) may start that stretched.
+    stretched = _world(0.38)
+    _vertices(stretched)
+    with pytest.raises(SimulationError, match=r"held_by \(arm left\) at >= 0\.3849 m") as err:
+        _vertices(dataclasses.replace(stretched, start_at_rest=True))
+    assert "above the 0.11 N its start allows (its weight: the sensor's tare" in str(err.value)
+    _vertices(dataclasses.replace(_world(0.386), start_at_rest=True))  # 1 mm of slack

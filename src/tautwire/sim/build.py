@@ -75,6 +75,7 @@ def world_spec(scenario: Scenario, seed: int | None = None) -> WorldSpec:
         noise_force=robot.sensor.noise_force,
         noise_torque=robot.sensor.noise_torque,
         seed=scenario.seed if seed is None else seed,
+        start_at_rest=True,
     )
 
 

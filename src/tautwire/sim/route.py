@@ -15,6 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from tautwire.errors import SimulationError
+from tautwire.model import GRAVITY
 from tautwire.model.quaternion import rotate
 from tautwire.sim.discretization import CableDiscretization
 from tautwire.sim.spec import CableSpec, ClipSpec, HoldSpec, PegSpec, WorldSpec
@@ -147,6 +148,62 @@ def _interpolate(polyline: FloatArray, arcs: FloatArray, s: float) -> FloatArray
     return point
 
 
+def rest_tension_limit(world: WorldSpec, cable: CableSpec) -> float:
+    """Largest tension [N] ``cable`` may start with in ``world``.
+
+    The force limit; in a world that starts a run (``world.start_at_rest``),
+    also no more than the cable's weight. Such a run tares its wrist sensors
+    against the load a slack held cable explains (its weight share, give or
+    take a few cable weights); a cable that starts stretched pulls beyond
+    that, the tare takes the pull for a sensor offset and removes it, and
+    every tension measured afterwards is short by it.
+    """
+    if not world.start_at_rest:
+        return world.force_limit
+    weight = cable.mass_per_length * cable.length * float(-GRAVITY[2])
+    return min(world.force_limit, weight)
+
+
+def _check_stretch(
+    world: WorldSpec, cable: CableSpec, sa: float, sb: float, route: float, pad_exit: float
+) -> None:
+    """Refuse a route between known arc lengths that starts the cable stretched.
+
+    The message names the hold whose ``at`` closes the span (the known arc
+    length ``sb`` is a held point or one ``pad_exit`` [m] before it) and the
+    smallest ``at`` that would do.
+
+    Raises:
+        SimulationError: if the route is longer than the cable between arc
+            lengths ``sa`` and ``sb`` [m] by more than a tension of
+            :func:`rest_tension_limit` stretches it.
+    """
+    stretch = route - (sb - sa)
+    if stretch <= 0.0:
+        return
+    tension = cable.stiffness * cable.length * stretch / max(sb - sa, 1e-12)
+    limit = rest_tension_limit(world, cable)
+    if tension > limit:
+        why = (
+            "its weight: the sensor's tare at the start would take the pull for an offset"
+            if limit < world.force_limit
+            else "the force limit"
+        )
+        hold = next((h for h in cable.holds if 0.0 <= h.at - sb <= pad_exit + 1e-9), None)
+        fix = (
+            f"held_by (arm {hold.arm}) at >= {hold.at + stretch:.4f} m, or fixtures nearer"
+            " the route"
+            if hold is not None
+            else f"at least {route:.4f} m of cable between the two, or fixtures nearer the route"
+        )
+        raise SimulationError(
+            f"cable {cable.name}: its initial route between arc lengths {sa:g} m and {sb:g} m"
+            f" (the fixtures and the gripper's fingers) is {route:.4f} m long, {stretch * 1e3:.1f}"
+            f" mm more than the cable there, so it would start stretched at {tension:.2f} N, above"
+            f" the {limit:.2f} N its start allows ({why}); expected {fix}"
+        )
+
+
 def initial_vertices(
     world: WorldSpec,
     cable: CableSpec,
@@ -226,17 +283,7 @@ def initial_vertices(
                 sa, sb = known[a], known[b]
                 assert sa is not None and sb is not None
                 arcs[i] = sa + (sb - sa) * (dist[i] - dist[a]) / (dist[b] - dist[a])
-                stretch = (dist[b] - dist[a]) - (sb - sa)
-                if (
-                    stretch > 0.0
-                    and cable.stiffness * cable.length * stretch / max(sb - sa, 1e-12)
-                    > world.force_limit
-                ):
-                    raise SimulationError(
-                        f"cable {cable.name}: its initial route between arc lengths {sa} m and"
-                        f" {sb} m is {dist[b] - dist[a]:.4f} m long, so the cable would start"
-                        f" stretched beyond the force limit {world.force_limit} N"
-                    )
+                _check_stretch(world, cable, sa, sb, float(dist[b] - dist[a]), pad_exit)
             elif prev:
                 ka = known[prev[-1]]
                 assert ka is not None

@@ -200,6 +200,10 @@ class WorldSpec:
         noise_force: Sensor force noise [N], standard deviation per axis.
         noise_torque: Sensor torque noise [N m], standard deviation per axis.
         seed: Seed of the sensor noise.
+        start_at_rest: The world is the start of a run that tares its
+            sensors with the robot at rest (a scenario's world): no cable may
+            start stretched beyond its weight (:func:`tautwire.sim.route.rest_tension_limit`).
+            Off, a cable may start stretched up to the force limit.
     """
 
     fixtures: tuple[FixtureSpec, ...]
@@ -212,6 +216,7 @@ class WorldSpec:
     noise_force: float = 0.0
     noise_torque: float = 0.0
     seed: int = 0
+    start_at_rest: bool = False
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "fixtures", tuple(self.fixtures))
