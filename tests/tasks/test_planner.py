@@ -1403,3 +1403,27 @@ def test_random_board_973985212_is_refused_where_f1s_push_would_take_the_fingers
         match=r"W1, route entry 1 \(F1\): pressing the cable into F1 takes the gripper into F3",
     ):
         plan_scenario(_board(973985212))
+
+
+def test_random_board_905979088_lays_w2_over_f6_before_the_pair_turns_onto_its_slot() -> None:
+    # seed 27: after the slide out of F5 the pair lay along F5's slot, 96 deg
+    # from F6's; C turned it the short way with the near gripper beyond its
+    # reach and stopped at 13.8 N. The plan now swings W2 over F6 first, so
+    # that the pair grasps along a line within C_ANGLE of the slot.
+    board = _board(905979088)
+    fixtures = {f.name: f for f in route_problem(board).fixtures}
+    steps = plan_scenario(board).steps
+    c = next(
+        i
+        for i, s in enumerate(steps)
+        if s.primitive == "parallel_clipping" and s.params["clip"] == "F6"
+    )
+    assert steps[c - 1].primitive == "grasp_tensioned"
+    swing = steps[c - 2]
+    assert swing.primitive == "move" and swing.why == "swing the cable over the clip for C"
+    to = swing.params["to"]
+    assert isinstance(to, list)
+    line = np.array(to[:2]) - np.array(fixtures["F5"].position[:2])
+    slot = np.array([math.cos(fixtures["F6"].yaw), math.sin(fixtures["F6"].yaw)])
+    across = math.acos(abs(float(line @ slot)) / float(np.linalg.norm(line)))
+    assert across <= planner.C_ANGLE

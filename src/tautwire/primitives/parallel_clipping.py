@@ -51,6 +51,49 @@ def _towards(a: np.ndarray, b: np.ndarray, limit: float) -> np.ndarray:
     return out
 
 
+def near_side(ctx: PrimitiveContext, seat: np.ndarray, slot: np.ndarray) -> float | None:
+    """The sign s for which the left gripper ends on the seat's ``s * slot`` side.
+
+    The cable runs from a fixed point (a contact or a fixed point of the
+    model, the nearest one outside the span between the grippers) to the
+    near gripper, over the clip and on to the far gripper; the near gripper
+    has to end between that fixed point and the clip. Held with the other
+    end's line across the slot, the shorter turn onto the slot can take it
+    to the far side instead, beyond the cable it holds past the fixed point
+    (random board 905979088's C into F6: the pair lay 96 deg from the slot
+    the right way, 84 the wrong way; the near gripper went round, and its
+    span pulled 13.8 N while the span between the grippers held 3 N).
+
+    Returns:
+        +1 or -1; None where the model has no fixed point outside the
+        grippers, or it lies within 10 deg of square to the slot from the
+        seat (either side then fits).
+    """
+    graph = ctx.graph
+    left = graph.index_of("gripper", "left")
+    right = graph.index_of("gripper", "right")
+    if left is None or right is None:
+        return None
+    lo, hi = sorted((left, right))
+    fixed = [i for i, p in enumerate(graph.points) if p.kind in ("fixed", "contact")]
+    before = [i for i in fixed if i < lo]
+    after = [i for i in fixed if i > hi]
+    if before:
+        anchor, near = before[-1], lo
+    elif after:
+        anchor, near = after[0], hi
+    else:
+        return None
+    to_fixed = graph.points[anchor].position - seat
+    to_fixed[2] = 0.0
+    distance = norm3(to_fixed)
+    along = float(to_fixed @ slot)
+    if distance < 1e-9 or abs(along) < math.sin(math.radians(10.0)) * distance:
+        return None
+    side = 1.0 if along > 0.0 else -1.0  # the near gripper's side of the seat
+    return side if near == left else -side
+
+
 class ParallelClipping(Primitive):
     """Primitive C: both grippers hold the cable taut over a clip and push it in.
 
@@ -113,9 +156,12 @@ class ParallelClipping(Primitive):
         self.force = push_tension(info.push_force, ctx.tension, ctx.limits.max_force)
         self._base_force = ctx.tension if ctx.tension is not None else 2.0
         self._known = [id(p) for p in ctx.graph.points]
-        # the cable along the slot, each gripper staying on its side
+        # the cable along the slot, the near gripper on the side of the fixed
+        # point behind it (else each gripper staying on its side)
         rel = obs.left.position - obs.right.position
-        sense = 1.0 if float(rel @ info.slot) >= 0.0 else -1.0
+        sense = near_side(ctx, info.position, info.slot)
+        if sense is None:
+            sense = 1.0 if float(rel @ info.slot) >= 0.0 else -1.0
         self._rel_dir = sense * info.slot  # p_left - p_right direction
         self._q = orientation_along(-self._rel_dir)  # x from left towards right
         # either tool axis may run along the cable: a gripper whose x points

@@ -134,6 +134,16 @@ C_ANGLE = math.radians(59.0)
 #: (1672212970) 4 times in the 5 whose outcome is known; after turns of
 #: 61-80 deg it missed once in 10 (544908519 at 73 deg).
 C_TURN = math.radians(80.0)
+#: Largest turn [rad] of the pair onto the slot that C makes from the line
+#: the other gripper grasps along (where the gripper was left, e.g. by the
+#: slide out of the last clip, which runs on along that clip's slot).
+#: Beyond it the cable is first swung over the clip. Over seeds 24-27,
+#: every C whose pair turned 60-79 deg clipped (11 boards); both that
+#: turned more stopped at the protective stop: 916737448 (109 deg, 13.6
+#: N) and 905979088 (97 deg, 13.8 N; the line from F5 to F6 was 53 deg
+#: from the slot). Past 90 deg C turned the short way, the near gripper to
+#: the clip's far side, beyond the cable it held past the fixed point.
+C_PAIR_TURN = math.radians(80.0)
 #: How far [m] a cable that turns out of a clip runs on along the slot past
 #: its exit before it turns: its straight span points back to a virtual
 #: corner this far ahead of the exit, not to the exit (random board
@@ -1838,6 +1848,36 @@ class _Planner:
                 raise self.pivot_error(
                     cable, clip, hit, f"held {r:.3f} m past the clip after the hand-over"
                 )
+        target = self.swing_over_clip(cable, clip, "bring the cable over the clip, along its slot")
+        self.emit(cable, "gripper_alignment", "align the gripper with the cable", arm=cable.arm)
+        self.emit(
+            cable,
+            "single_arm_clipping",
+            "push the cable into the clip",
+            arm=cable.arm,
+            clip=clip.name,
+        )
+        cable.pressed = self.after_push(cable, clip, exit_point, target)
+        cable.s_contact += to_exit
+        cable.contact = exit_point
+        cable.lay(clip.name)
+
+    def swing_over_clip(self, cable: _Cable, clip: BoardFixture, why: str) -> FloatArray:
+        """Swing the taut cable about its last fixed point until it runs over the clip's seat.
+
+        The gripper goes round the fixed point at the cable's free length
+        (waypoints :meth:`arc`, kept low enough out of a clip) to where the
+        straight cable passes ``ABOVE`` over the seat; each waypoint is a
+        taut ``move`` described by ``why``.
+
+        Returns:
+            The gripper's new position [m] (also set on ``cable``).
+
+        Raises:
+            RouteError: The gripper would go below ``TABLE_CLEARANCE`` or out
+                of reach, or the swept cable would meet a fixture.
+        """
+        c = cable.contact
         seat_over = _vec(clip.position) + np.array([0.0, 0.0, ABOVE])
         target = c + _unit(seat_over - c) * cable.free
         if float(target[2]) < TABLE_CLEARANCE:
@@ -1855,20 +1895,9 @@ class _Planner:
             cable, c, cable.gripper, waypoints, "bringing the cable over the clip", clip.name
         )
         for point in waypoints:
-            self.emit_move(cable, point, "bring the cable over the clip, along its slot")
+            self.emit_move(cable, point, why)
         cable.gripper = target
-        self.emit(cable, "gripper_alignment", "align the gripper with the cable", arm=cable.arm)
-        self.emit(
-            cable,
-            "single_arm_clipping",
-            "push the cable into the clip",
-            arm=cable.arm,
-            clip=clip.name,
-        )
-        cable.pressed = self.after_push(cable, clip, exit_point, target)
-        cable.s_contact += to_exit
-        cable.contact = exit_point
-        cable.lay(clip.name)
+        return target
 
     def push_hand_over(self, cable: _Cable, to_exit: float, r: float, what: str) -> float:
         """Hand the cable over ``r`` [m] past the clip's exit for F's push; the new ``r`` [m].
@@ -2065,6 +2094,11 @@ class _Planner:
             )
         grasp = cable.at - 2.0 * half
         self.require_clear_pair(cable, clip, slot, half, grasp)
+        line = _unit(_flat(cable.gripper - cable.contact))
+        if float(line @ _unit(_flat(slot))) < math.cos(C_PAIR_TURN):
+            # lay the line the pair grasps along over the clip first: C's
+            # turn is then the slot's angle to it (C_ANGLE at most)
+            self.swing_over_clip(cable, clip, "swing the cable over the clip for C")
         self.emit(
             cable, "grasp_tensioned", "grasp the cable with the other gripper", arm=other, at=grasp
         )
