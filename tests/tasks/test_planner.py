@@ -1427,3 +1427,28 @@ def test_random_board_905979088_lays_w2_over_f6_before_the_pair_turns_onto_its_s
     slot = np.array([math.cos(fixtures["F6"].yaw), math.sin(fixtures["F6"].yaw)])
     across = math.acos(abs(float(line @ slot)) / float(np.linalg.norm(line)))
     assert across <= planner.C_ANGLE
+
+
+def test_random_board_333750234_does_not_lift_w2_wound_round_f4_up_off_its_top(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    # seed 27: W2 wound 401 deg round F4 (top 110 mm) and lifted to 197 mm
+    # before its slide out (climb 0.41); the wrap came off over the top and
+    # the grasp after it stopped at 13.5 N. A full turn is no longer taken
+    # to hold: without that lift the pair meets F6 and the board is refused.
+    board = _board(333750234)
+    with pytest.raises(RouteError, match=r"W2, route entry 2 \(F5\): C's grippers"):
+        plan_scenario(board)
+    monkeypatch.setattr(planner, "PEG_HOLD_FRICTION", 1.0)
+    lift = next(
+        s
+        for s in plan_scenario(board).steps
+        if s.primitive == "move" and s.why.startswith("lift the cable clear")
+    )
+    assert lift.params["to"] == [0.3189, -0.1245, 0.1967]
+    f4 = next(f for f in route_problem(board).fixtures if f.name == "F4")
+    top = f4.position[2] + f4.height - 0.003 - 0.003
+    climb = planner.peg_climb(
+        np.array([0.0796, -0.2104, 0.08]), f4, top, np.array([0.3189, -0.1245, 0.1967])
+    )
+    assert climb == pytest.approx(0.405, abs=0.01)

@@ -251,7 +251,13 @@ CLIP_RISE = MAX_FAR_RISE
 #: the cable clear of the board before sliding it out" (climb 0.38): MuJoCo
 #: had the cable off F4 at the move's end and the move found it slack. Over
 #: the 90 boards of seeds 24-26 every other move planned from a peg climbed
-#: at most 0.08, and all of those boards completed.
+#: at most 0.08, and all of those boards completed. A full turn round the
+#: peg does not hold it either (the span rising to the gripper lifts the
+#: wrap up its own strand, as in ``WIND_ABOVE``): random board 333750234
+#: (seed 27), W2 wound 401 deg round F4 (top 110 mm), then lifted to 197
+#: mm, 162 mm from F4 (climb 0.41), held 3 N through E and D, and 1.5 s
+#: later the wrap came off over the top in 0.08 s (F4's contact force 14.7
+#: -> 0.03 N, the tension 2.9 -> 0.1 N).
 PEG_HOLD_FRICTION = 0.1
 #: Step [rad] of the rise a gripper is lifted by, about the last fixed point,
 #: before a slide that would otherwise run into a fixture.
@@ -944,17 +950,14 @@ class _Planner:
     def lifts_off_peg(self, cable: _Cable, point: FloatArray) -> float | None:
         """The climb (:func:`peg_climb`) of a gripper at ``point`` [m] lifting the cable off a peg.
 
-        None where it does not: the last fixed point is not a peg, the
-        cable is wound a full turn round it (the turn's friction holds it),
-        or the climb with the cable at the top of the peg's band (the
-        cable's radius and 3 mm under the top) is at most
-        ``PEG_HOLD_FRICTION``. The cable may slide up the peg on the way
+        None where it does not: the last fixed point is not a peg, or the
+        climb with the cable at the top of the peg's band (the cable's
+        radius and 3 mm under the top) is at most ``PEG_HOLD_FRICTION``,
+        wound round it or not. The cable may slide up the peg on the way
         there, no further.
         """
         last = self.fixtures.get(cable.last) if cable.last else None
         if last is None or last.kind != "peg" or len(cable.laid) < 2:
-            return None
-        if cable.s_held == cable.s_contact:
             return None
         top = last.position[2] + last.height - cable.spec.radius - 0.003
         climb = peg_climb(cable.laid[-2][1], last, top, point)
