@@ -45,7 +45,7 @@ SCENE = {
     },
     "cables": [
         {"name": "W1", "length": 0.5, "mass_per_length": 0.03, "stiffness": 200.0,
-         "radius": 0.0025, "start": "A1", "via": ["P1"], "held_by": {"arm": "left", "at": 0.32}}
+         "radius": 0.0025, "start": "A1", "via": ["P1"], "held_by": {"arm": "left", "at": 0.325}}
     ],
     "task": [
         {"primitive": "single_arm_tension", "arm": "left", "force": 3.0},
