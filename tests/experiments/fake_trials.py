@@ -91,3 +91,52 @@ def hanging_trial(spec: TrialSpec) -> TrialResult:
     if (spec.letter, spec.index) == ("D", 1):
         time.sleep(600.0)
     return quick_trial(spec)
+
+
+#: Board indices that :func:`fake_board` ran, in this process (serial backend).
+BOARDS_RUN: list[int] = []
+
+
+def fake_board(spec: TrialSpec) -> TrialResult:
+    """A harness board without simulation: board 1 fails (not_clipped), board 3 raises."""
+    from tautwire.experiments.harness import LETTER, HarnessTrial
+
+    BOARDS_RUN.append(spec.index)
+    failed = spec.index == 1
+    cause = "error" if spec.index == 3 else ("not_clipped" if failed else None)
+    record = {
+        "board": spec.index,
+        "seed": spec.seed,
+        "redraws": 0,
+        "completed": cause is None,
+        "false_successes": 0,
+        "false_steps": [],
+        "true_max_force": 5.0,
+        "over_force_limit": False,
+        "steps": 12,
+        "failed_step": None if cause is None else "7 single_arm_clipping (W1)",
+        "cause": cause,
+        "detail": None if cause is None else "the cable lies 9 mm beside the slot",
+        "routes_done": 2 if cause is None else 0,
+        "false_routes": 0,
+        "model_horizontal_mean": 0.001 * (spec.index + 1),
+        "model_horizontal_max": 0.002,
+        "model_vertical_mean": 0.001,
+        "model_vertical_max": 0.002,
+        "sim_time": 30.0,
+        "wall_time": 0.01,
+    }
+    return HarnessTrial(
+        LETTER,
+        "harness",
+        spec.index,
+        spec.seed,
+        {},
+        "success" if cause is None else "failure",
+        cause,
+        record["detail"] or "",
+        5.0,
+        30.0,
+        0.01,
+        record=record,
+    )

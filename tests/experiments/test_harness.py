@@ -14,6 +14,7 @@ from tautwire.cli.main import main
 from tautwire.experiments.harness import (
     BOARDS_CSV,
     BOARDS_JSON,
+    BOARDS_JSONL,
     BOARDS_MD,
     _untrue_routes,
     summarise_boards,
@@ -143,3 +144,65 @@ def test_a_run_whose_steps_all_agreed_says_which_route_the_simulator_denies() ->
     }
     assert _untrue_routes({"cables": [done]}) == []
     assert _untrue_routes({"cables": [done, denied]}) == ["W2: F6 does not hold the cable"]
+
+
+def _campaign(out: Path, boards: int, *, seed: int = 5, resume: bool = False) -> dict[str, Any]:
+    from tautwire.experiments.harness import reproduce_harness_boards
+
+    from .fake_trials import fake_board
+
+    return reproduce_harness_boards(boards, 1, seed, out, "serial", trial=fake_board, resume=resume)
+
+
+def test_each_board_is_written_as_it_ends_and_a_resume_runs_only_the_rest(
+    tmp_path: Path,
+) -> None:
+    from .fake_trials import BOARDS_RUN
+
+    BOARDS_RUN.clear()
+    first = _campaign(tmp_path, 4)
+    assert BOARDS_RUN == [0, 1, 2, 3] and first["resumed"] == 0
+    lines = (tmp_path / BOARDS_JSONL).read_text().splitlines()
+    assert [json.loads(line)["index"] for line in lines] == [0, 1, 2, 3]
+    assert all(json.loads(line)["campaign"] == {"seed": 5, "steps": None} for line in lines)
+    # the machine stopped while board 2 ran and the line of board 3 was being written
+    (tmp_path / BOARDS_JSONL).write_text("\n".join([lines[0], lines[1], lines[3][:40]]) + "\n")
+    BOARDS_RUN.clear()
+    again = _campaign(tmp_path, 6, resume=True)
+    # boards 0 and 1 (a failure of its own) are reused, the cut line and the rest run
+    assert BOARDS_RUN == [2, 3, 4, 5] and again["resumed"] == 2
+    assert [r["board"] for r in again["board_records"]] == [0, 1, 2, 3, 4, 5]
+    assert (again["boards"], again["completed"]) == (6, 4)
+    assert again["causes"] == {"not_clipped": 1, "error": 1}
+    # board 3 raised: a resume runs it again, and only it
+    BOARDS_RUN.clear()
+    third = _campaign(tmp_path, 6, resume=True)
+    assert BOARDS_RUN == [3] and third["resumed"] == 5
+    assert third["board_records"] == again["board_records"]
+    # without --resume the file starts over
+    BOARDS_RUN.clear()
+    _campaign(tmp_path, 2)
+    assert BOARDS_RUN == [0, 1]
+    assert len((tmp_path / BOARDS_JSONL).read_text().splitlines()) == 2
+
+
+def test_a_resume_over_another_campaign_or_a_broken_line_names_the_file_and_line(
+    tmp_path: Path,
+) -> None:
+    from tautwire.errors import InvalidArgumentError
+
+    _campaign(tmp_path, 2)
+    with pytest.raises(InvalidArgumentError, match=r"line 1: a board of another campaign"):
+        _campaign(tmp_path, 2, seed=6, resume=True)
+    lines = (tmp_path / BOARDS_JSONL).read_text().splitlines()
+    (tmp_path / BOARDS_JSONL).write_text("\n".join(["{oops", *lines]) + "\n")
+    with pytest.raises(InvalidArgumentError, match=rf"{BOARDS_JSONL}, line 1: not JSON"):
+        _campaign(tmp_path, 2, resume=True)
+    (tmp_path / BOARDS_JSONL).write_text('{"index": 0}\n' + "\n".join(lines) + "\n")
+    with pytest.raises(InvalidArgumentError, match=r"line 1: not a board's record"):
+        _campaign(tmp_path, 2, resume=True)
+
+
+def test_resume_is_for_a_board_campaign(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["reproduce", "harness", "--resume"]) != 0
+    assert "--resume: only with --boards" in capsys.readouterr().err

@@ -75,6 +75,7 @@ Examples:
   tautwire reproduce robustness --trials 40 --no-faults
   tautwire reproduce harness                    # the harness board: figure, GIF, steps, JSON
   tautwire reproduce harness --boards 10 --workers 2 --seed 0
+  tautwire reproduce harness --boards 10 --seed 0 --resume   # finish a campaign that stopped
 
 \b
 Without --json, a table (lengths in mm, forces in N) on stdout and the
@@ -138,8 +139,8 @@ files under --out; a campaign shows a progress bar on stderr.
 @click.option(
     "--resume",
     is_flag=True,
-    help="table1: reuse the trials of the same campaign already in the output folder "
-    "(those that crashed, hung or raised an internal error run again)",
+    help="table1, harness --boards: reuse the trials of the same campaign already in the "
+    "output folder (those that crashed, hung or raised an internal error run again)",
 )
 @click.option(
     "--no-faults",
@@ -197,7 +198,6 @@ def reproduce(
             "--trials": trials,
             "--letters": letters,
             "--only": only,
-            "--resume": resume or None,
             "--no-faults": no_faults or None,
         }
         given = [option for option, value in others.items() if value is not None]
@@ -210,6 +210,7 @@ def reproduce(
                 "--address": address,
                 "--trial-timeout": trial_timeout,
                 "--steps": steps,
+                "--resume": resume or None,
             }
             given = [option for option, value in campaign_only.items() if value is not None]
             if given:
@@ -225,6 +226,7 @@ def reproduce(
             address=address,
             trial_timeout=HARNESS_TRIAL_TIMEOUT if trial_timeout is None else trial_timeout,
             steps=steps,
+            resume=resume,
         )
     if name == "robustness":
         table1_only = {"--letters": letters, "--resume": resume or None}
@@ -574,6 +576,7 @@ def _harness_boards(
     address: str | None,
     trial_timeout: float,
     steps: int | None = None,
+    resume: bool = False,
 ) -> int:
     """Run the random-board campaign with a progress bar on stderr; 130 if interrupted."""
     from tautwire.experiments.harness import reproduce_harness_boards
@@ -597,6 +600,7 @@ def _harness_boards(
             address=address,
             trial_timeout=trial_timeout if backend == "local" else None,
             steps=steps,
+            resume=resume,
         )
     if as_json:
         click.echo(json.dumps(report, indent=2))
@@ -605,6 +609,7 @@ def _harness_boards(
             title=f"harness: {report['completed']} of {report['boards']} boards completed, "
             f"{report['false_successes']} false successes, {report['over_force_limit']} over "
             f"the force limit, {report['wall_time']:.0f} s"
+            + (f" ({report['resumed']} boards reused)" if report["resumed"] else "")
         )
         for column in ("[mm]", "model median", "model p90", "shape median", "shape p90"):
             table.add_column(column, justify="right" if column != "[mm]" else "left")

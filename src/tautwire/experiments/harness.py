@@ -21,6 +21,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import os
 import time
 import traceback
 from collections.abc import Callable, Mapping, Sequence
@@ -30,7 +31,8 @@ from typing import Any
 
 import numpy as np
 
-from tautwire.experiments.campaign import run_campaign
+from tautwire.errors import InvalidArgumentError
+from tautwire.experiments.campaign import is_trial_outcome, run_campaign
 from tautwire.experiments.trial import TrialResult, TrialSpec, trial_seed
 from tautwire.scenario import Scenario, load_scenario
 from tautwire.scenario.registry import scenario_path
@@ -63,6 +65,8 @@ JSON_FILE = "harness.json"
 BOARDS_JSON = "harness_boards.json"
 BOARDS_MD = "harness_boards.md"
 BOARDS_CSV = "harness_boards.csv"
+#: One line per finished board, written as boards finish (``--resume`` reads it).
+BOARDS_JSONL = "harness_boards.jsonl"
 WORST_FIGURE = "harness_worst_board.png"
 
 ProgressCallback = Callable[[int, int, int], None]  # finished, planned, failures
@@ -559,6 +563,107 @@ def worst_board(records: Sequence[Mapping[str, Any]]) -> Mapping[str, Any] | Non
     return max(runs, key=badness) if runs else None
 
 
+class BoardLog:
+    """The campaign's boards as JSON lines, one per finished board, flushed to disk as each ends.
+
+    A campaign of fifty boards runs for hours; a machine that stops (or a
+    Ctrl-C, a killed parent) then loses only the boards still running, and
+    ``resume=True`` runs only the others. Each line is the board's
+    :class:`HarnessTrial` (its record and its figure's data) with the
+    campaign it belongs to (``{"campaign": {"seed": S, "steps": N}}``).
+    """
+
+    def __init__(
+        self, path: Path, seed: int, steps: int | None, kept: Sequence[TrialResult] = ()
+    ) -> None:
+        """Start the file at ``path`` anew with the boards ``kept`` (a resume's).
+
+        Rewriting the kept boards drops what a resume does not reuse: a
+        line cut short, boards that crashed, boards of a longer campaign.
+
+        Args:
+            path: The file.
+            seed: The campaign's seed, written into every line.
+            steps: The campaign's ``steps`` (None: whole tasks), written too.
+            kept: Boards already run, written first.
+        """
+        self.path = path
+        self.campaign = {"seed": seed, "steps": steps}
+        self._file = path.open("w", encoding="utf-8")
+        for result in kept:
+            self.append(result)
+
+    def append(self, result: TrialResult) -> None:
+        """Write one finished board and push it to the disk."""
+        line = {"campaign": self.campaign, **result.to_dict()}
+        self._file.write(json.dumps(line) + "\n")
+        self._file.flush()
+        os.fsync(self._file.fileno())
+
+    def close(self) -> None:
+        """Close the file."""
+        self._file.close()
+
+
+def read_board_log(
+    path: Path, specs: Sequence[TrialSpec], seed: int, steps: int | None
+) -> list[HarnessTrial]:
+    """The boards of ``specs`` that the board log at ``path`` holds as run to their own end.
+
+    A board whose worker crashed, hung or raised is left out (it runs
+    again); so are lines of boards not in ``specs``. A last line cut short
+    (the machine stopped while writing it) is skipped.
+
+    Raises:
+        InvalidArgumentError: naming the file and the line, for a line that
+            is not a board's JSON record, or one of another campaign
+            (another seed or ``steps``).
+    """
+    if not path.exists():
+        return []
+    wanted = {s.index: s for s in specs}
+    found: dict[int, HarnessTrial] = {}
+    lines = path.read_text(encoding="utf-8").splitlines()
+    for number, text in enumerate(lines, start=1):
+        if not text.strip():
+            continue
+        where = f"{path}, line {number}"
+        try:
+            data = json.loads(text)
+        except json.JSONDecodeError as exc:
+            if number == len(lines):  # written when the machine stopped
+                break
+            raise InvalidArgumentError(
+                f"{where}: not JSON ({exc.msg}); expected one board per line as "
+                "`tautwire reproduce harness --boards` writes it"
+            ) from None
+        try:
+            campaign = data.pop("campaign")
+            trial = HarnessTrial(**{**data, "figure": tuple(data.get("figure", ()))})
+        except (AttributeError, KeyError, TypeError) as exc:
+            raise InvalidArgumentError(
+                f"{where}: not a board's record ({exc}); expected the fields of a board "
+                "as `tautwire reproduce harness --boards` writes them"
+            ) from None
+        if campaign != {"seed": seed, "steps": steps}:
+            raise InvalidArgumentError(
+                f"{where}: a board of another campaign (seed {campaign.get('seed')}, steps "
+                f"{campaign.get('steps')}; this one: seed {seed}, steps {steps}); "
+                "drop --resume or choose another --out"
+            )
+        spec = wanted.get(trial.index)
+        if spec is None:
+            continue
+        if trial.seed != spec.seed:
+            raise InvalidArgumentError(
+                f"{where}: board {trial.index} has seed {trial.seed}, not {spec.seed}: "
+                "the file was changed or written by another version; drop --resume"
+            )
+        if is_trial_outcome(trial):
+            found[trial.index] = trial
+    return [found[i] for i in sorted(found)]
+
+
 def reproduce_harness_boards(
     boards: int,
     workers: int = 2,
@@ -571,8 +676,13 @@ def reproduce_harness_boards(
     trial_timeout: float | None = None,
     trial: Callable[[TrialSpec], TrialResult] | None = None,
     steps: int | None = None,
+    resume: bool = False,
 ) -> dict[str, Any]:
     """Run ``boards`` random boards; write the JSON, Markdown, CSV and the worst board's figure.
+
+    Every board is also written to ``harness_boards.jsonl`` as soon as it
+    ends (:class:`BoardLog`), so that a campaign that stops loses only the
+    boards it was running.
 
     Args:
         boards: Boards to draw and run.
@@ -587,33 +697,52 @@ def reproduce_harness_boards(
             stopped and recorded as failed with cause ``"hung"``.
         trial: The trial function (tests pass fakes).
         steps: Run only each board's first ``steps`` planned steps (None: all).
+        resume: Reuse the boards of this campaign already in the output
+            folder's ``harness_boards.jsonl`` (an earlier run that stopped)
+            and run only the others; boards that crashed, hung or raised
+            run again. ``wall_time`` is then this run's; ``resumed`` counts
+            the boards reused.
+
+    Raises:
+        InvalidArgumentError: a resume over a file of another campaign, or
+            a line of it that is not a board's record (named by its number).
     """
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     specs = [TrialSpec(LETTER, i, trial_seed(seed, LETTER, i)) for i in range(boards)]
-    finished = [0, 0]
+    log_path = out / BOARDS_JSONL
+    reused = read_board_log(log_path, specs, seed, steps) if resume else []
+    done = {r.index for r in reused}
+    todo = [s for s in specs if s.index not in done]
+    finished = [len(reused), sum(1 for r in reused if not r.success)]
     if progress is not None:
-        progress(0, boards, 0)
+        progress(finished[0], boards, finished[1])
+    board_log = BoardLog(log_path, seed, steps, reused)
 
     def on_result(result: TrialResult) -> None:
+        board_log.append(result)
         finished[0] += 1
         finished[1] += 0 if result.success else 1
         if progress is not None:
             progress(finished[0], boards, finished[1])
 
     t0 = time.perf_counter()
-    campaign = run_campaign(
-        specs,
-        trial or HarnessTrialFunction(steps),
-        backend=backend,
-        workers=workers,
-        address=address,
-        on_result=on_result,
-        log_dir=out / "logs" if backend == "local" else None,
-        trial_timeout=trial_timeout,
-    )
+    try:
+        campaign = run_campaign(
+            todo,
+            trial or HarnessTrialFunction(steps),
+            backend=backend,
+            workers=workers,
+            address=address,
+            on_result=on_result,
+            log_dir=out / "logs" if backend == "local" else None,
+            trial_timeout=trial_timeout,
+        )
+    finally:
+        board_log.close()
     wall = time.perf_counter() - t0
-    records = [_record_of(r) for r in campaign.results]
+    results = sorted([*reused, *campaign.results], key=lambda r: r.index)
+    records = [_record_of(r) for r in results]
     report = summarise_boards(
         records,
         seed=seed,
@@ -623,11 +752,17 @@ def reproduce_harness_boards(
         interrupted=campaign.interrupted,
         planned=boards,
         steps=steps,
+        resumed=len(reused),
     )
-    report["files"] = {"json": BOARDS_JSON, "markdown": BOARDS_MD, "csv": BOARDS_CSV}
+    report["files"] = {
+        "json": BOARDS_JSON,
+        "markdown": BOARDS_MD,
+        "csv": BOARDS_CSV,
+        "boards": BOARDS_JSONL,
+    }
     worst = worst_board(records)
     if worst is not None:
-        result = next(r for r in campaign.results if r.index == worst["board"])
+        result = next(r for r in results if r.index == worst["board"])
         figure = result.figure if isinstance(result, HarnessTrial) else ()
         if figure:
             fixtures = {k: (v[0], v[1]) for k, v in worst.get("fixtures", {}).items()}
