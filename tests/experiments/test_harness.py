@@ -206,3 +206,14 @@ def test_a_resume_over_another_campaign_or_a_broken_line_names_the_file_and_line
 def test_resume_is_for_a_board_campaign(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["reproduce", "harness", "--resume"]) != 0
     assert "--resume: only with --boards" in capsys.readouterr().err
+
+
+def test_the_worst_boards_title_says_how_it_ended() -> None:
+    from tautwire.experiments.harness import _ending
+
+    assert _ending(_record(0)) == "completed"
+    failed = _record(1, completed=False, cause="not_clipped", failed_step="23 F (W2)")
+    assert _ending(failed) == "failed at step 23 F (W2)"
+    # every step ran and one was false: no step to name (seed 29's board 144771393)
+    false = _record(2, completed=False, cause="false_success", false_successes=1)
+    assert _ending(false) == "every step ran (false_success)"

@@ -771,8 +771,8 @@ def reproduce_harness_boards(
                 [CableFigure.from_dict(c) for c in figure],
                 fixtures,
                 f"worst of {len(records)} boards: board {worst['board']} (seed {worst['seed']}), "
-                f"{'completed' if worst['completed'] else 'failed at ' + str(worst['failed_step'])}"
-                f", {worst['false_successes']} false successes",
+                f"{_ending(worst)}, {worst['false_successes']} false "
+                f"success{'' if worst['false_successes'] == 1 else 'es'}",
             )
             report["files"]["worst_board"] = WORST_FIGURE
         report["worst_board"] = {k: v for k, v in worst.items() if k != "fixtures"}
@@ -781,6 +781,15 @@ def reproduce_harness_boards(
     (out / BOARDS_MD).write_text(boards_markdown(report, records))
     write_boards_csv(out / BOARDS_CSV, records)
     return report
+
+
+def _ending(record: Mapping[str, Any]) -> str:
+    """How a board ended, for a title: completed, the step it failed at, or every step run."""
+    if record["completed"]:
+        return "completed"
+    if record["failed_step"] is None:
+        return f"every step ran ({record['cause']})"
+    return f"failed at step {record['failed_step']}"
 
 
 def _untrue_routes(result: Mapping[str, Any]) -> list[str]:
