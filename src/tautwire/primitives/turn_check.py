@@ -26,9 +26,15 @@ from tautwire.errors import InvalidArgumentError
 FloatArray = NDArray[np.float64]
 
 #: Largest difference [rad] between the pull's turn and the angle asked
-#: for I to succeed (the truth's tolerance is 6 deg; the pull's direction
-#: holds the chord's to a degree).
-TURN_TOLERANCE = math.radians(4.0)
+#: for I to succeed. The truth's tolerance is 6 deg, and the pull reads the
+#: cable where it leaves the fingers, not the straight span's chord from the
+#: peg: on random board 144771393 (seed 29) they parted by 2-3 deg (at the
+#: start the span entered the fingers 32 mm behind the tool centre point,
+#: 4.8 mm aside), and with 4 deg here the pull's 36 deg for 32 asked passed
+#: while the span truly turned 38 (a false success). At 3 deg the gripper
+#: takes that miss up (the pull then read 32 deg, the span 35); a gap of
+#: more than 3 deg would still pass falsely.
+TURN_TOLERANCE = math.radians(3.0)
 #: Taut samples averaged for the start direction.
 START_SAMPLES = 5
 #: Least pull [N] normal to the axis for a start sample to count (at the
