@@ -589,14 +589,23 @@ class BoardLog:
         """
         self.path = path
         self.campaign = {"seed": seed, "steps": steps}
-        self._file = path.open("w", encoding="utf-8")
-        for result in kept:
-            self.append(result)
+        # the kept boards go to a new file that replaces the old one whole:
+        # a stop while they are written loses none of them
+        fresh = path.with_name(path.name + ".new")
+        with fresh.open("w", encoding="utf-8") as fh:
+            for result in kept:
+                fh.write(self._line(result))
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(fresh, path)
+        self._file = path.open("a", encoding="utf-8")
+
+    def _line(self, result: TrialResult) -> str:
+        return json.dumps({"campaign": self.campaign, **result.to_dict()}) + "\n"
 
     def append(self, result: TrialResult) -> None:
         """Write one finished board and push it to the disk."""
-        line = {"campaign": self.campaign, **result.to_dict()}
-        self._file.write(json.dumps(line) + "\n")
+        self._file.write(self._line(result))
         self._file.flush()
         os.fsync(self._file.fileno())
 
@@ -647,9 +656,8 @@ def read_board_log(
             ) from None
         if campaign != {"seed": seed, "steps": steps}:
             raise InvalidArgumentError(
-                f"{where}: a board of another campaign (seed {campaign.get('seed')}, steps "
-                f"{campaign.get('steps')}; this one: seed {seed}, steps {steps}); "
-                "drop --resume or choose another --out"
+                f"{where}: a board of another campaign ({json.dumps(campaign)}; this one: "
+                f"seed {seed}, steps {steps}); drop --resume or choose another --out"
             )
         spec = wanted.get(trial.index)
         if spec is None:
