@@ -587,7 +587,6 @@ class BoardLog:
             steps: The campaign's ``steps`` (None: whole tasks), written too.
             kept: Boards already run, written first.
         """
-        self.path = path
         self.campaign = {"seed": seed, "steps": steps}
         # the kept boards go to a new file that replaces the old one whole:
         # a stop while they are written loses none of them
