@@ -284,3 +284,65 @@ def test_against_an_anchor_d_does_not_tug() -> None:
     assert report.success, report
     assert "swung aside" not in report.detail
     assert np.linalg.norm(robot.p[[1, 2]] - GRIPPER[[1, 2]]) < 1e-3  # held still across the cable
+
+
+def test_slack_drawn_through_a_clip_after_the_cable_was_taut_is_taken_up_anew() -> None:
+    # random board 1729667587 (seed 30): taut at 3 N from clip F3, D drew
+    # slack the model did not know of through F3 in a slip; the tension
+    # stayed at 0.1 N for a second. A clip holds across, not along: D takes
+    # the slack up again and holds (an anchor's slip still fails: above)
+    info = ClipInfo(np.array([0.15, 0.0, 0.092]), 0.0, 4.0, 0.02)
+    gripper = np.array([0.35, 0.0, 0.1])
+    exit_point = info.exit_towards(gripper) + np.array([0.0, 0.0, JAW_TOP])
+    gripper[2] = exit_point[2]
+    far = np.array([0.0, 0.0, float(exit_point[2])])
+    graph = PathGraph.from_positions(
+        [far, info.position, gripper],
+        mass_per_length=0.0,
+        kinds=["fixed", "fixed", "gripper"],
+        labels=["A1", "F3", "left"],
+    )
+    ctx = make_context(graph, "left", k_initial=1000.0, clips={"F3": info})
+    robot = SpringCableRobot(exit_point, gripper, 1000.0, slack=0.005, seed=3)
+    tension = SingleArmTension("left", 3.0)
+    slipped: list[float] = []
+
+    def on_tick(record: TickRecord) -> None:
+        if tension.phase != "approach" and not slipped:
+            robot.rest += 0.04  # 40 mm drawn through the clip at once
+            slipped.append(record.observation.time)
+
+    report = run_step(robot, tension, ctx, on_tick=on_tick)
+    assert slipped
+    assert report.success, report
+    assert "took up slack drawn through F3 once" in report.detail
+    # the gripper pulled on by the slack drawn
+    assert robot.p[0] > gripper[0] + 0.035
+
+
+def test_slack_drawn_through_two_clips_leaves_both_spans_behind_straight() -> None:
+    # cable drawn through F3 comes through F2 too: F3 moves by both spans' slack
+    a1, f2, f3 = np.array([0.0, 0.0, 0.08]), np.array([0.1, 0.0, 0.08]), np.array([0.2, 0.0, 0.08])
+    sag12, sag23 = np.array([0.05, 0.0, 0.05]), np.array([0.15, 0.0, 0.06])
+    gripper = np.array([0.35, 0.0, 0.1])
+    graph = PathGraph.from_positions(
+        [a1, sag12, f2, sag23, f3, gripper],
+        mass_per_length=0.0,
+        kinds=["fixed", "free", "fixed", "free", "fixed", "gripper"],
+        labels=["A1", "", "F2", "", "F3", "left"],
+    )
+    s = graph.arc_lengths()
+    slack12 = float(s[2] - s[0]) - 0.1
+    slack23 = float(s[4] - s[2]) - 0.1
+    total = float(s[5])
+    ctx = make_context(graph, "left", k_initial=500.0)
+    step = SingleArmTension("left", 3.0)
+    step._through = ((4, slack23), (2, slack12))  # the route's order: nearest the gripper first
+    note = step._draw_through(ctx)
+    assert "through F3" in note and "through F2" in note
+    labels = [p.label for p in ctx.graph.points]
+    assert labels == ["A1", "F2", "F3", "left"]
+    s = ctx.graph.arc_lengths()
+    assert s[1] == pytest.approx(0.1)  # A1-F2 straight
+    assert s[2] - s[1] == pytest.approx(0.1)  # F2-F3 straight
+    assert s[3] == pytest.approx(total)  # no cable made or lost

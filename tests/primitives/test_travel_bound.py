@@ -117,3 +117,36 @@ def test_the_route_runs_on_through_a_clip_with_slack_behind_it() -> None:
     behind = graph.arc_lengths()[f5]
     assert behind == pytest.approx(0.1)
     assert route_to_fixed_point(est, state, {"F5"}).through == ()  # type: ignore[union-attr]
+
+
+def test_through_all_runs_through_every_clip_to_the_point_that_holds_the_cable() -> None:
+    """D's retake: slack the model does not know of was drawn through the clips."""
+    from tautwire.model import PathGraph
+    from tautwire.primitives import make_context
+    from tautwire.primitives.model_estimator import TensionState
+    from tautwire.primitives.travel_bound import route_to_fixed_point
+
+    anchor, f2 = np.array([0.0, 0.0, 0.08]), np.array([0.1, 0.0, 0.08])
+    f3, gripper = np.array([0.1, 0.1, 0.08]), np.array([0.2, 0.1, 0.1])
+    graph = PathGraph.from_positions(
+        [anchor, f2, f3, gripper],
+        mass_per_length=0.03,
+        kinds=["fixed", "fixed", "fixed", "gripper"],
+        labels=["A1", "F2", "F3", "left"],
+    )
+    ctx = make_context(graph, "left", k_initial=500.0)
+    est = ctx.estimator
+    assert est.contact_index == 2
+    state = TensionState(3.0, -np.array([1.0, 0, 0]), np.zeros(3), np.zeros(3), f3, 0.1, True)
+    s = graph.arc_lengths()
+    # every span straight in the model: the route ends at F3
+    route = route_to_fixed_point(est, state, {"F2", "F3"})
+    assert route is not None and route.through == ()
+    assert route.rest_length == pytest.approx(float(s[3] - s[2]))
+    # through all: on to the anchor, the whole cable from it bounding the travel
+    route = route_to_fixed_point(est, state, {"F2", "F3"}, through_all=True)
+    assert route is not None
+    assert [i for i, _ in route.through] == [2, 1]
+    assert all(slack == pytest.approx(0.0, abs=1e-9) for _, slack in route.through)
+    assert route.rest_length == pytest.approx(float(s[3]))
+    assert route.length == pytest.approx(0.1 + 0.1 + 0.1)  # the span measured, then straight

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,7 +55,8 @@ class Edge:
     def join(self, other: Edge) -> Edge:
         """The edge made of this one followed by ``other`` (springs in series)."""
         length = self.length + other.length
-        stiffness = 1.0 / (1.0 / self.stiffness + 1.0 / other.stiffness)
+        compliance = float(1.0 / self.stiffness + 1.0 / other.stiffness)
+        stiffness = 1.0 / compliance if compliance > 0.0 else math.inf  # two rigid edges: rigid
         total = length if length > 0.0 else 1.0
         tension = (self.tension * self.length + other.tension * other.length) / total
         return Edge(length, 0.0, tension, stiffness)

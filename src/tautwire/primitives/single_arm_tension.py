@@ -53,6 +53,21 @@ FORCE_LIMIT_RESERVE = 0.8
 #: 0.3 N wandering up and down, and 48 mm drawn in its 30 s).
 SLACK_PULL_SPEED = 0.02
 SLACK_PULL_BELOW = 0.5
+#: Times D takes up slack anew when the tension, taut at its set point from a
+#: clip, falls away: a clip holds the cable across its slot, not along it,
+#: and a pull draws slack the model does not know of through it (random
+#: board 1729667587, seed 30: C's near span let 45 mm slide through clip F2
+#: into the sagging span before it; D's 3 N from F3 then drew it through F2
+#: and F3 in slips of 13 mm, the tension at 0.1 N for a second each). The
+#: route then runs through every clip behind the gripper to the next point
+#: that truly holds the cable (:func:`route_to_fixed_point`), whose rest
+#: length bounds the travel.
+RETAKES = 3
+#: Time [s] each retake adds to D's timeout. A retake does not learn k anew:
+#: the model's rest length behind the clip is short by the slack drawn, and
+#: a fit over it ran to ``learn_timeout`` (the board above: 14 s, then the
+#: tug, and the 30 s ran out with the cable taut at its set point).
+RETAKE_TIME = 8.0
 #: Largest angle [rad] between the tool axis and the cable at which D starts learning k.
 ALIGNED = math.radians(10.0)
 #: How long [s] a turned gripper must stay aligned before D learns k.
@@ -182,6 +197,7 @@ class SingleArmTension(Primitive):
         max_swing: float = 0.02,
     ) -> None:
         super().__init__(timeout if duration is None else max(timeout, duration + 1.0))
+        self._timeout = self.timeout  # before retakes add to it
         if arm not in ("left", "right"):
             raise InvalidArgumentError(f"arm must be 'left' or 'right', got {arm!r}")
         if not (force > 0.0 and math.isfinite(force)):
@@ -263,6 +279,9 @@ class SingleArmTension(Primitive):
         self._tug: _Tug | None = None
         self._tugged = False
         self._tug_note = ""
+        self._retakes = 0  # times the slack drawn through clips was taken up anew
+        self.timeout = self._timeout
+        self._retake_clip = ""
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
         """Update the model, run the hybrid controller, judge the outcome."""
@@ -294,7 +313,8 @@ class SingleArmTension(Primitive):
             or obs.time - self._aligned_since >= ALIGNED_TIME
         )
         if self._phase == "approach" and settled and abs(state.tension - self.force) <= band:
-            self._phase = "learning" if self.learn_excitation > 0.0 else "hold"
+            learn = self.learn_excitation > 0.0 and not self._retakes
+            self._phase = "learning" if learn else "hold"
             self._learn_start = self.elapsed
             ctx.estimator.learn_elasticity = True
         self._schedule(ctx)
@@ -436,9 +456,12 @@ class SingleArmTension(Primitive):
                 f"tension {tension:.2f} N held {self.hold_time:g} s{self._k_note(ctx)}"
                 + self._tug_note
                 + self._draw_through(ctx)
+                + self._retake_note()
             )
             return
         if self._phase != "approach" and self._slack.update(obs.time, state.tension, self.force):
+            if self._retake(ctx):
+                return
             self.outcome = Outcome.failure(
                 "slipped",
                 f"the tension fell to {state.tension:.2f} N, below {SLACK_FRACTION:.2g} of its"
@@ -452,7 +475,9 @@ class SingleArmTension(Primitive):
                 "no_contact", f"pulled {travel:.2f} m and the cable never became taut"
             )
             return
-        route = route_to_fixed_point(ctx.estimator, state, ctx.clips.keys())
+        route = route_to_fixed_point(
+            ctx.estimator, state, ctx.clips.keys(), through_all=self._retakes > 0
+        )
         self._through = route.through if route is not None else ()
         if route is None:
             return
@@ -502,12 +527,44 @@ class SingleArmTension(Primitive):
         self._phase = "tug"
         return True
 
+    def _retake(self, ctx: PrimitiveContext) -> bool:
+        """Take up slack drawn through a clip anew (:data:`RETAKES`); whether D does.
+
+        Only where the point the cable is taut from is a clip: the approach
+        starts again, with the route (and its travel bound) running through
+        every clip behind to the point that truly holds the cable, and the
+        clip's tug is felt again once the tension holds.
+        """
+        c = ctx.estimator.contact_index
+        if self._retakes >= RETAKES or c is None:
+            return False
+        point = ctx.graph.points[c]
+        if point.kind != "fixed" or point.label not in ctx.clips:
+            return False
+        self._retakes += 1
+        self._retake_clip = point.label
+        self.timeout += RETAKE_TIME
+        self._phase = "approach"
+        self._slack = SlackWatch(SLACK_TIME, SLACK_FRACTION)
+        self._judge_tension.reset()
+        self._taut_since = self._aligned_since = None
+        self._tug, self._tugged, self._tug_note = None, False, ""
+        ctx.estimator.learn_elasticity = False
+        return True
+
+    def _retake_note(self) -> str:
+        if not self._retakes:
+            return ""
+        times = "once" if self._retakes == 1 else f"{self._retakes} times"
+        return f"; took up slack drawn through {self._retake_clip} {times}"
+
     def _draw_through(self, ctx: PrimitiveContext) -> str:
         """The model edit once taut: the slack the pull drew through clips is past them.
 
-        Each clip on the route with slack behind it moves along the cable
-        towards the fixed point by that slack (:func:`move_hold`): the span
-        behind it now lies straight, the one before the gripper is longer.
+        Each clip on the route moves along the cable towards the fixed point
+        by the slack of every span behind it (:func:`move_hold`; the farthest
+        first): the spans behind lie straight now, the one before the gripper
+        is longer.
         """
         through = self._through
         if not through:
@@ -515,7 +572,20 @@ class SingleArmTension(Primitive):
         g = ctx.estimator.gripper_index
         moved = []
         points = ctx.graph.points
-        for index, slack in sorted(through, reverse=True):
+        towards_start = g is None or through[0][0] < g
+        # the farthest clip first; each moves by the slack behind it and beyond
+        ordered = sorted(through, reverse=not towards_start)
+        clips, drawn, total = [], [], 0.0
+        for index, slack in ordered:
+            total += slack
+            clips.append(points[index])
+            drawn.append(total)
+        for clip, slack in zip(clips, drawn, strict=True):
+            if slack <= 1e-4:
+                continue
+            points = ctx.graph.points
+            index = next(k for k, p in enumerate(points) if p is clip)
+            g = ctx.estimator.gripper_index
             sense = 1 if g is not None and index > g else -1  # towards the fixed point
             # the span behind lies straight now: its free points (where a
             # gripper let go) mark nothing
@@ -523,9 +593,9 @@ class SingleArmTension(Primitive):
                 ctx.graph.remove_point(index + sense)
                 index -= 1 if sense < 0 else 0
             move_hold(ctx.graph, index, sense * slack)
-            moved.append(f"{1e3 * slack:.0f} mm through {points[index].label}")
+            moved.append(f"{1e3 * slack:.0f} mm through {clip.label}")
         self._through = ()
-        return "; drew " + ", ".join(moved)
+        return "; drew " + ", ".join(moved) if moved else ""
 
     def _k_note(self, ctx: PrimitiveContext) -> str:
         e = ctx.estimator.elasticity

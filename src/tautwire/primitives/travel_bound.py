@@ -131,7 +131,10 @@ SLACK_THROUGH = 0.004
 
 
 def route_to_fixed_point(
-    estimator: ModelEstimator, state: TensionState, clips: Collection[str] = ()
+    estimator: ModelEstimator,
+    state: TensionState,
+    clips: Collection[str] = (),
+    through_all: bool = False,
 ) -> Route | None:
     """The route from the sensing gripper to the nearest point that holds the cable fixed.
 
@@ -146,7 +149,11 @@ def route_to_fixed_point(
     more than ``SLACK_THROUGH`` of slack beyond its straight length, the pull
     draws that slack through the clip, and the route runs on, straight, to
     the next constrained point (the near span a parallel clip's release
-    leaves loose: random board 1808415002's F5).
+    leaves loose: random board 1808415002's F5). With ``through_all`` the
+    route runs through every clip, slack or not, to the next point that
+    truly holds the cable: the pull has drawn slack the model does not
+    know of through a clip (D's retake), and the cable between that point
+    and the gripper is what bounds its travel.
     """
     graph = estimator.graph
     g = estimator.gripper_index
@@ -176,9 +183,9 @@ def route_to_fixed_point(
             break
         straight = norm3(points[j].position - points[i].position)
         slack = abs(float(s[i] - s[j])) - straight
-        if slack <= SLACK_THROUGH:
+        if slack <= SLACK_THROUGH and not through_all:
             break
-        through.append((i, slack))
+        through.append((i, max(slack, 0.0)))
         length += straight
         i = j
     return Route(length, abs(float(s[g] - s[i])), abs(float(s[g] - s[c])), tuple(through))
