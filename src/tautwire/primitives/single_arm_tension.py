@@ -281,6 +281,7 @@ class SingleArmTension(Primitive):
         self._tug_note = ""
         self._retakes = 0  # times the slack drawn through clips was taken up anew
         self.timeout = self._timeout
+        self._k_start = ctx.estimator.elasticity.k_trusted  # the prior a retake returns to
         self._retake_clip = ""
 
     def on_step(self, obs: Observation, ctx: PrimitiveContext) -> Command:
@@ -550,6 +551,9 @@ class SingleArmTension(Primitive):
         self._taut_since = self._aligned_since = None
         self._tug, self._tugged, self._tug_note = None, False, ""
         ctx.estimator.learn_elasticity = False
+        # a fit over the slips learnt the clip's friction, not the cable (board
+        # 1729667587: 5.1 N/m at a 4 % std): back to the prior D started with
+        ctx.estimator.elasticity.reset(k_initial=self._k_start)
         return True
 
     def _retake_note(self) -> str:
