@@ -317,7 +317,7 @@ class SingleArmTension(Primitive):
             learn = self.learn_excitation > 0.0 and not self._retakes
             self._phase = "learning" if learn else "hold"
             self._learn_start = self.elapsed
-            ctx.estimator.learn_elasticity = True
+            ctx.estimator.learn_elasticity = not self._retakes  # a retake keeps the prior
         self._schedule(ctx)
         if self._phase == "tug" and self._tug is not None:
             target = self._tug.step(obs.time, me.position, obs.wrench(self.arm).force, state)
