@@ -466,3 +466,26 @@ def make_context_with_peg(peg: np.ndarray, radius: float):  # type: ignore[no-un
         estimation_period=0.04,
         round_fixtures={"P1": (peg.copy(), radius)},
     )
+
+
+@pytest.mark.parametrize(("beside", "taken"), [(0.009, True), (0.013, True), (0.023, False)])
+def test_lines_meet_at_a_peg_only_where_the_pull_passes_it_at_its_radius(
+    beside: float, taken: bool
+) -> None:
+    # random board 679789613 (seed 30): the filter of anchor A2, converging
+    # along the span during a move, passed within 29 mm of peg F4 at a 10 mm
+    # std, and F4 became the contact; the pull's line passed F4's axis 23 mm
+    # off (radius 9 mm), the cable nowhere near it: a trusted, made-up peg
+    R = 0.009  # peg + cable radius
+    peg = np.array([0.25, beside, 0.05])
+    ctx = make_context_with_peg(peg, R)
+    est = ctx.estimator
+    est._filter_point = ctx.graph.points[0]  # A1's filter
+    est._design = CONTACT.copy()
+    x = np.array([0.25, 0.0, 0.1])  # 150 mm along the span from A1: beside the peg
+    est.contact_filter.start(x, 1e-6 * np.eye(3))
+    f = CONTACT - GRIPPER  # the pull along the span to A1
+    changed = est._met_at_peg(GRIPPER.copy(), f)
+    assert changed == taken
+    labels = [p.label for p in ctx.graph.points]
+    assert labels == (["A1", "P1", "left"] if taken else ["A1", "left"]), labels

@@ -146,6 +146,15 @@ UNKNOWN_SPREAD = math.radians(20.0)
 MOVE_TOLERANCE = 0.002
 #: ... and its estimate lies at least this far [m] in front of the gripper along the cable.
 MIN_AHEAD = 0.02
+#: Farthest [m] beyond the peg's radius (plus the cable's) that the pull's
+#: line may pass its axis for the lines to be taken as meeting at the peg:
+#: a cable that bears on a peg leaves it tangentially, so its line passes
+#: the axis at that radius. Random board 679789613 (seed 30): the filter of
+#: anchor A2, converging along the span from the gripper during a move
+#: (280 mm in 1.5 s at a 10 mm std), passed within the gate of peg F4, and
+#: the model took F4 as trusted while the pull's line passed its axis 23 mm
+#: off (the radius 9 mm; the cable did not touch it): a false success.
+PEG_LINE_GATE = 0.006
 #: A candidate lies within this distance [m] (plus three std, plus a design
 #: peg's radius) of the taut span as it was when the change began.
 SEGMENT_TOLERANCE = 0.005
@@ -292,6 +301,20 @@ class TensionState:
     contact: FloatArray
     span: float
     taut: bool
+
+
+def _line_off_axis(p_line: FloatArray, f: FloatArray, axis_point: FloatArray) -> float:
+    """Horizontal distance [m] from the vertical axis through ``axis_point`` to a line.
+
+    The line passes through ``p_line`` along ``f``; infinite where it is vertical.
+    """
+    u = np.asarray(f, dtype=float)[:2]
+    n = float(np.linalg.norm(u))
+    if n < 1e-9:
+        return math.inf
+    u = u / n
+    w = (np.asarray(axis_point, dtype=float) - np.asarray(p_line, dtype=float))[:2]
+    return float(np.linalg.norm(w - u * float(w @ u)))
 
 
 class ModelEstimator:
@@ -1195,6 +1218,8 @@ class ModelEstimator:
                 continue
             if self._over_peg(name, x):
                 continue
+            if _line_off_axis(p_line, f, axis_point) > radius + PEG_LINE_GATE:
+                continue  # the pull's line passes the peg by: the cable runs past it
             if not self._add_contact(x.copy(), p_line):
                 return False
             # the lines met where they touch the peg, a radius beside its
