@@ -3,7 +3,7 @@ import pytest
 
 from tautwire.errors import InvalidArgumentError
 from tautwire.model import PathGraph
-from tautwire.primitives import SingleArmTension, make_context
+from tautwire.primitives import PrimitiveContext, SingleArmTension, make_context
 from tautwire.primitives.clip_sensing import JAW_TOP
 from tautwire.primitives.context import ClipInfo
 from tautwire.primitives.model_estimator import TensionState
@@ -252,18 +252,7 @@ def test_at_a_clip_in_line_with_the_point_before_it_d_tugs_to_tell_held_from_lef
     # random board 1652323633 (seed 0): D's pull drew the cable out of clip
     # F2, whose line from the gripper passed through peg F1 behind it, and D
     # reported success against F1: only lifting about the clip tells them apart
-    info = ClipInfo(np.array([0.15, 0.0, 0.092]), 0.0, 4.0, 0.02)
-    gripper = np.array([0.35, 0.0, 0.1])
-    exit_point = info.exit_towards(gripper) + np.array([0.0, 0.0, JAW_TOP])
-    far = np.array([0.0, 0.0, float(exit_point[2])])
-    gripper[2] = exit_point[2]
-    graph = PathGraph.from_positions(
-        [far, info.position, gripper],
-        mass_per_length=0.0,
-        kinds=["fixed", "fixed", "gripper"],
-        labels=["A1", "F2", "left"],
-    )
-    ctx = make_context(graph, "left", k_initial=300.0, clips={"F2": info})
+    ctx, gripper, exit_point, far = _clip_scene("F2", 300.0)
     robot = SpringCableRobot(exit_point if held else far, gripper, 300.0, slack=0.005, seed=3)
     report = run_step(robot, SingleArmTension("left", 3.0), ctx)
     if held:
@@ -291,18 +280,7 @@ def test_slack_drawn_through_a_clip_after_the_cable_was_taut_is_taken_up_anew() 
     # slack the model did not know of through F3 in a slip; the tension
     # stayed at 0.1 N for a second. A clip holds across, not along: D takes
     # the slack up again and holds (an anchor's slip still fails: above)
-    info = ClipInfo(np.array([0.15, 0.0, 0.092]), 0.0, 4.0, 0.02)
-    gripper = np.array([0.35, 0.0, 0.1])
-    exit_point = info.exit_towards(gripper) + np.array([0.0, 0.0, JAW_TOP])
-    gripper[2] = exit_point[2]
-    far = np.array([0.0, 0.0, float(exit_point[2])])
-    graph = PathGraph.from_positions(
-        [far, info.position, gripper],
-        mass_per_length=0.0,
-        kinds=["fixed", "fixed", "gripper"],
-        labels=["A1", "F3", "left"],
-    )
-    ctx = make_context(graph, "left", k_initial=1000.0, clips={"F3": info})
+    ctx, gripper, exit_point, _ = _clip_scene("F3", 1000.0)
     robot = SpringCableRobot(exit_point, gripper, 1000.0, slack=0.005, seed=3)
     tension = SingleArmTension("left", 3.0)
     slipped: list[float] = []
@@ -346,3 +324,24 @@ def test_slack_drawn_through_two_clips_leaves_both_spans_behind_straight() -> No
     assert s[1] == pytest.approx(0.1)  # A1-F2 straight
     assert s[2] - s[1] == pytest.approx(0.1)  # F2-F3 straight
     assert s[3] == pytest.approx(total)  # no cable made or lost
+
+
+def _clip_scene(clip: str, k: float) -> tuple[PrimitiveContext, np.ndarray, np.ndarray, np.ndarray]:
+    """Anchor A1, clip ``clip`` and the left gripper in a line along x, the model's k ``k``.
+
+    Returns:
+        The context, the gripper's position, the clip's exit (jaws' top) and
+        the anchor, at the exit's height.
+    """
+    info = ClipInfo(np.array([0.15, 0.0, 0.092]), 0.0, 4.0, 0.02)
+    gripper = np.array([0.35, 0.0, 0.1])
+    exit_point = info.exit_towards(gripper) + np.array([0.0, 0.0, JAW_TOP])
+    far = np.array([0.0, 0.0, float(exit_point[2])])
+    gripper[2] = exit_point[2]
+    graph = PathGraph.from_positions(
+        [far, info.position, gripper],
+        mass_per_length=0.0,
+        kinds=["fixed", "fixed", "gripper"],
+        labels=["A1", clip, "left"],
+    )
+    return make_context(graph, "left", k_initial=k, clips={clip: info}), gripper, exit_point, far

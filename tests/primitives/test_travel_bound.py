@@ -121,21 +121,12 @@ def test_the_route_runs_on_through_a_clip_with_slack_behind_it() -> None:
 
 def test_through_all_runs_through_every_clip_to_the_point_that_holds_the_cable() -> None:
     """D's retake: slack the model does not know of was drawn through the clips."""
-    from tautwire.model import PathGraph
-    from tautwire.primitives import make_context
     from tautwire.primitives.model_estimator import TensionState
     from tautwire.primitives.travel_bound import route_to_fixed_point
 
-    anchor, f2 = np.array([0.0, 0.0, 0.08]), np.array([0.1, 0.0, 0.08])
-    f3, gripper = np.array([0.1, 0.1, 0.08]), np.array([0.2, 0.1, 0.1])
-    graph = PathGraph.from_positions(
-        [anchor, f2, f3, gripper],
-        mass_per_length=0.03,
-        kinds=["fixed", "fixed", "fixed", "gripper"],
-        labels=["A1", "F2", "F3", "left"],
-    )
-    ctx = make_context(graph, "left", k_initial=500.0)
-    est = ctx.estimator
+    f3 = np.array([0.1, 0.1, 0.08])
+    points = {"A1": [0.0, 0.0, 0.08], "F2": [0.1, 0.0, 0.08], "F3": f3, "left": [0.2, 0.1, 0.1]}
+    graph, est = _chain(points, ["fixed", "fixed", "fixed", "gripper"])
     assert est.contact_index == 2
     state = TensionState(3.0, -np.array([1.0, 0, 0]), np.zeros(3), np.zeros(3), f3, 0.1, True)
     s = graph.arc_lengths()
@@ -150,3 +141,17 @@ def test_through_all_runs_through_every_clip_to_the_point_that_holds_the_cable()
     assert all(slack == pytest.approx(0.0, abs=1e-9) for _, slack in route.through)
     assert route.rest_length == pytest.approx(float(s[3]))
     assert route.length == pytest.approx(0.1 + 0.1 + 0.1)  # the span measured, then straight
+
+
+def _chain(points: dict[str, object], kinds: list[str]):  # type: ignore[no-untyped-def]
+    """The path graph through ``points`` (label -> position) and its estimator, k 500 N/m."""
+    from tautwire.model import PathGraph
+    from tautwire.primitives import make_context
+
+    graph = PathGraph.from_positions(
+        [np.asarray(p, dtype=float) for p in points.values()],
+        mass_per_length=0.03,
+        kinds=kinds,
+        labels=list(points),
+    )
+    return graph, make_context(graph, "left", k_initial=500.0).estimator
