@@ -213,7 +213,7 @@ class ParallelClipping(Primitive):
         return out
 
     def _give_way(self, obs: Observation, period: float) -> None:
-        """Shift the pair's set point along the slot, away from a pull from outside the pair.
+        """Shift the pair's set point along the slot, towards a pull from outside the pair.
 
         Both wrists measure what the cable pulls on them: the span between
         the grippers pulls the two equally and oppositely (its weight
