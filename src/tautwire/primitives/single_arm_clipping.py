@@ -47,6 +47,16 @@ ATTEMPTS = 3
 #: board 1754934167, seed 17: read in at 5 mm over the seat, the tug drew it
 #: 9.6 mm beside the slot, and the next push took it down beside the clip).
 REALIGNS = 1
+#: Share of the turn onto the slot (:mod:`~tautwire.primitives.slot_swing`)
+#: made after each new alignment. The whole turn leaves the far side's kink,
+#: f sin(alpha), all at the entry end, pulling the cable across towards the
+#: far contact; where the groove does not hold it, the cable slides off the
+#: jaws on that side, and the same turn again slides it off again (random
+#: board 225583068's F1, 8 deg from an anchor 117 mm away, at 6 N: 3.8 mm
+#: across the slot when it fell beside the clip, twice). Half the turn
+#: splits the kink between the clip's ends, and the cable snapped in there;
+#: none left it on the jaws, crossing diagonally.
+REALIGN_SWING = 0.5
 #: Time [s] a new alignment adds to the primitive's timeout.
 REALIGN_TIME = 12.0
 #: Steepest angle [rad] of the cable below the clip before giving up.
@@ -129,7 +139,8 @@ class SingleArmClipping(Primitive):
     seat, it pushes again, deeper, up to ``ATTEMPTS`` times. Where the line
     at rest passes the slot's exit beside the channel (beyond ``SIDEWAYS``),
     or the tug turned the pull about the far contact, the cable is brought
-    over the clip again (the alignment) and pushed anew, ``REALIGNS`` times.
+    over the clip again (the alignment) and pushed anew, ``REALIGNS`` times,
+    each time with ``REALIGN_SWING`` of the last turn onto the slot.
 
     Where no snap is felt down to ``MAX_ANGLE`` or the table
     (``TABLE_CLEARANCE``), it lifts back all the same and judges the line at
@@ -555,7 +566,8 @@ class SingleArmClipping(Primitive):
                 out[2] = 0.0
                 self._out = out / max(float(np.linalg.norm(out)), 1e-9)
                 self._tug = ClipTug(self._out)
-                self._swing = SlotSwing(turn_onto(self._out, self.info.slot), JAW_TOP)
+                share = REALIGN_SWING**self.realigns
+                self._swing = SlotSwing(share * turn_onto(self._out, self.info.slot), JAW_TOP)
                 self._exit = self.info.exit_towards(me.position)
                 self._exit[2] += JAW_TOP
                 seat = self.info.position
