@@ -31,6 +31,15 @@ FloatArray = NDArray[np.float64]
 # collision bits
 _CABLE, _FIXTURE, _PAD = 1, 2, 4
 _STIFF_CONTACT = 'solref="0.002 1"'
+#: Thickness [m] of a clip's channel walls. A contact's stiffness here scales
+#: with the light cable vertices' mass, so a cable pressed sideways sinks into
+#: a wall; once its centre passes the wall's middle plane the contact pushes
+#: it out the other side. 2 mm walls let a cable kinked 53 deg at 10 N through
+#: (tests/sim/test_mjcf.py), and random board 1646371135's W1, kinked 27 deg
+#: at F2 while F pushed it into F3 at 8.5 N, went through F2's wall (its
+#: centre 4.4 mm off the slot, in a wall from 2.5 to 4.5 mm): the model kept
+#: F2, a false success. 5 mm walls hold both.
+WALL_THICKNESS = 0.005
 _HOLD_SOLREF = "0.0005 1"
 _HOLD_SOLIMP = "0.9999 0.9999 0.001"
 
@@ -166,7 +175,7 @@ def _anchor_xml(anchor: AnchorSpec, options: SimOptions) -> str:
 def _clip_xml(clip: ClipSpec, design: ClipDesign, options: SimOptions) -> str:
     half_len = 0.5 * options.clip_length
     r = design.cable_radius
-    wall_t = 0.002
+    wall_t = WALL_THICKNESS
     # the channel's floor: a solid block, as deep as the clip stands above
     # the table allows (up to 12 mm), so that a cable snapping in through the
     # jaws cannot pass through it in a time step (a 2 mm floor let W2's
