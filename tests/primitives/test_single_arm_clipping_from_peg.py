@@ -4,9 +4,12 @@ The cable runs from an anchor round a peg (its initial routing) to the
 gripper, over a clip 80 mm past the peg along the cable (slot along it).
 F aims the cable from the peg's tangent point, a peg + cable radius beside
 the axis: the cable snaps in, F says so and the simulator agrees. Aimed
-from the axis (the old behaviour, forced here), the cable is pressed down
-beside the clip: F must report ``not_clipped`` (the force line passes far
-below the seat), never a success.
+from beyond the axis (forced here: 6 mm further from the tangent point),
+the cable is pressed down beside the clip: F must report ``not_clipped``
+(the force line passes far below the seat), never a success. (Aimed from
+the axis itself, a peg + cable radius off, the cable came down on the
+clip's wall top since the walls are 5 mm thick, and F's new alignment
+seated it: a true success.)
 """
 
 from __future__ import annotations
@@ -73,9 +76,13 @@ def test_f_from_a_peg_aims_from_the_tangent_point_and_clips() -> None:
 def test_a_cable_pressed_beside_the_clip_reads_as_not_clipped(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
-    # aim from the peg's axis: the cable runs a radius beside the slot
+    # aim from 6 mm beyond the peg's axis, away from the tangent point: the
+    # cable comes down beside the clip (10.9 mm off the slot when lifted)
+    away = 0.006 * np.array([-np.sqrt(0.5), -np.sqrt(0.5), 0.0])
     monkeypatch.setattr(
-        SingleArmClipping, "_leave", lambda self, ctx, state, p, info: np.array(state.contact)
+        SingleArmClipping,
+        "_leave",
+        lambda self, ctx, state, p, info: np.array(state.contact) + away,
     )
     result, ctx, _ = run_scenario(_scene())
     f = result.steps[2]
