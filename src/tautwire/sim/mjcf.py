@@ -31,14 +31,16 @@ FloatArray = NDArray[np.float64]
 # collision bits
 _CABLE, _FIXTURE, _PAD = 1, 2, 4
 _STIFF_CONTACT = 'solref="0.002 1"'
-#: Thickness [m] of a clip's channel walls. A contact's stiffness here scales
-#: with the light cable vertices' mass, so a cable pressed sideways sinks into
-#: a wall; once its centre passes the wall's middle plane the contact pushes
-#: it out the other side. 2 mm walls let a cable kinked 53 deg at 10 N through
-#: (tests/sim/test_mjcf.py), and random board 1646371135's W1, kinked 27 deg
-#: at F2 while F pushed it into F3 at 8.5 N, went through F2's wall (its
-#: centre 4.4 mm off the slot, in a wall from 2.5 to 4.5 mm): the model kept
-#: F2, a false success. 5 mm walls hold both.
+#: Thickness [m] of a clip's channel walls. A cable pressed sideways sinks
+#: into a wall (a contact's stiffness scales with the light cable vertices'
+#: mass), and through a thin box MuJoCo's capsule-box contact finds the way
+#: out by the far face: 2 mm walls let a cable kinked 53 deg at 8.4 N through
+#: (tests/sim/test_mjcf.py), and 3 mm ones at 63 deg; with 4 mm it stayed
+#: against the wall, its centre 0.9 mm in (the truth: not in the channel).
+#: Random board 1646371135's W1, kinked 27 deg at F2 while F pushed it into
+#: F3 at 8.5 N, went through F2's 2 mm wall and the model kept F2: a false
+#: success. 5 mm walls hold all of these (the centre 2.8 mm off the slot at
+#: most, inside the channel).
 WALL_THICKNESS = 0.005
 _HOLD_SOLREF = "0.0005 1"
 _HOLD_SOLIMP = "0.9999 0.9999 0.001"
