@@ -34,8 +34,8 @@ _STIFF_CONTACT = 'solref="0.002 1"'
 #: Thickness [m] of a clip's channel walls. A cable pressed sideways sinks
 #: into a wall (a contact's stiffness scales with the light cable vertices'
 #: mass), and through a thin box MuJoCo's capsule-box contact finds the way
-#: out by the far face: 2 mm walls let a cable kinked 53 deg at 8.4 N through
-#: (tests/sim/test_mjcf.py), and 3 mm ones at 63 deg; with 4 mm it stayed
+#: out by the far face: 2 and 3 mm walls let a cable kinked 53 deg at 8.4 N
+#: through (tests/sim/test_mjcf.py); with 4 mm it stayed
 #: against the wall, its centre 0.9 mm in (the truth: not in the channel).
 #: Random board 1646371135's W1, kinked 27 deg at F2 while F pushed it into
 #: F3 at 8.5 N, went through F2's 2 mm wall and the model kept F2: a false
