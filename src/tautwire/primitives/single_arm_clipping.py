@@ -55,7 +55,7 @@ REALIGNS = 1
 #: board 225583068's F1, 8 deg from an anchor 117 mm away, at 6 N: 3.8 mm
 #: across the slot when it fell beside the clip, twice). Half the turn
 #: splits the kink between the clip's ends, and the cable snapped in there;
-#: none left it on the jaws, crossing diagonally.
+#: with no turn at all it stayed on the jaws, crossing them diagonally.
 REALIGN_SWING = 0.5
 #: Time [s] a new alignment adds to the primitive's timeout.
 REALIGN_TIME = 12.0
